@@ -1,0 +1,132 @@
+// rpu: the command line of the ray-processing-unit model (SCENE.md, "Command line").
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <iostream>
+
+#include "builtin_scenes.h"
+#include "common/error.h"
+#include "demo.h"
+#include "image/image_io.h"
+#include "scene/compiled_scene.h"
+#include "tracer/float_tracer.h"
+
+namespace {
+
+using namespace rpu;
+
+// Hardware parameters and render switches shared by every subcommand.
+struct CommonFlags {
+  int n = 16;
+  int n1 = 2;
+  int threads = 0;
+  bool no_binning = false;
+  bool no_grid = false;
+
+  void add_to(CLI::App& app) {
+    app.add_option("--n", n, "result bits of the iterative process (K = n/n1 steps)")
+        ->capture_default_str();
+    app.add_option("--n1", n1, "bits resolved per step (2^n1 candidates per step)")
+        ->capture_default_str();
+    app.add_option("--threads", threads, "worker threads (0 = all cores)")->capture_default_str();
+    app.add_flag("--no-binning", no_binning, "test every curve segment on every pixel");
+    app.add_flag("--no-grid", no_grid, "test every texture segment on every pixel");
+  }
+  tracer::FloatOptions float_options() const {
+    tracer::check_ip_parameters(n, n1);
+    tracer::FloatOptions o;
+    o.n = n;
+    o.n1 = n1;
+    o.threads = threads;
+    o.binning = !no_binning;
+    o.grid = !no_grid;
+    return o;
+  }
+};
+
+int render(const std::string& scene_arg, const std::string& backend, const std::string& output,
+           const CommonFlags& flags, bool quiet) {
+  tracer::FloatOptions o = flags.float_options();
+  if (backend == "float") {
+    o.method = tracer::Method::kIdeal;
+  } else if (backend == "float-ip") {
+    o.method = tracer::Method::kIterative;
+  } else {
+    throw Error("--backend", "backend '" + backend + "' is not built yet (available: float, float-ip)");
+  }
+  const scene::CompiledScene sc = scene::compile_scene(app::load_scene_argument(scene_arg));
+  const auto t0 = std::chrono::steady_clock::now();
+  tracer::RenderStats stats;
+  const image::Frame frame = tracer::render_float(sc, o, &stats);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<scene::Color> colors;
+  for (const auto& p : sc.primitives) colors.push_back(p.color);
+  image::write_rgb(output, frame.width, frame.height, image::to_rgb(frame, colors, sc.background));
+  if (!quiet)
+    std::cerr << fmt::format("{}: {}x{} {} in {:.3f} s, {} hit pixels, {} ray/segment pairs\n",
+                             output, frame.width, frame.height, backend, secs, frame.hit_pixels(),
+                             stats.pairs_tested);
+  return 0;
+}
+
+int print_config(const CommonFlags& flags) {
+  const tracer::FloatOptions o = flags.float_options();
+  std::cout << fmt::format("n         = {}\nn1        = {}\nK         = {}\ncandidates per step = {}\n"
+                           "threads   = {}\nbinning   = {}\ngrid      = {}\n",
+                           o.n, o.n1, o.n / o.n1, (1 << o.n1) + 1,
+                           o.threads == 0 ? std::string("all") : std::to_string(o.threads),
+                           o.binning ? "on" : "off", o.grid ? "on" : "off");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"rpu: model of an FPGA ray-processing unit for curves smoothed by spherical "
+               "interpolation and vector textures"};
+  app.require_subcommand(1);
+  CommonFlags flags;
+
+  auto* render_cmd = app.add_subcommand("render", "render one image");
+  std::string scene_arg, backend = "float", output;
+  bool quiet = false;
+  render_cmd->add_option("scene", scene_arg, "scene file (JSON, SCENE.md) or builtin:NAME")
+      ->required();
+  render_cmd->add_option("--backend,-b", backend, "float | float-ip")->capture_default_str();
+  render_cmd->add_option("-o,--output", output, "output image (.png, .exr, .ppm, ...)")->required();
+  render_cmd->add_flag("-q,--quiet", quiet, "no timing line on stderr");
+  flags.add_to(*render_cmd);
+
+  auto* config_cmd = app.add_subcommand("config", "print the effective parameter set");
+  flags.add_to(*config_cmd);
+
+  auto* demo_cmd = app.add_subcommand("demo", "render every built-in scene with every backend");
+  app::DemoOptions demo;
+  demo_cmd->add_option("--out", demo.out_dir, "output directory")->capture_default_str();
+  demo_cmd->add_option("--max-side", demo.max_side, "scale scenes down to at most this side");
+  flags.add_to(*demo_cmd);
+
+  auto* list_cmd = app.add_subcommand("scenes", "list the built-in scenes");
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (render_cmd->parsed()) return render(scene_arg, backend, output, flags, quiet);
+    if (config_cmd->parsed()) return print_config(flags);
+    if (demo_cmd->parsed()) {
+      demo.float_options = flags.float_options();
+      return app::run_demo(demo);
+    }
+    if (list_cmd->parsed()) {
+      for (const auto& b : app::builtin_scenes()) std::cout << "builtin:" << b.name << "\n";
+      return 0;
+    }
+  } catch (const rpu::Error& e) {
+    std::cerr << "rpu: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "rpu: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

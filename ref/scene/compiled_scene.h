@@ -1,0 +1,46 @@
+// The scene compiler's output (host side of the hardware): camera constants, per-segment
+// constants of every curve and texture, and the texture classification grid.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/classification_grid.h"
+#include "scene/scene.h"
+#include "scene/segment.h"
+
+namespace rpu::scene {
+
+// A primitive is one curve or one texture; its id orders equal-depth hits (lower wins) and
+// indexes the colour table. Curves come first (ids 0..C-1), then textures.
+struct Primitive {
+  enum class Kind { kCurve, kTexture };
+  Kind kind = Kind::kCurve;
+  int index = 0;  // index within scene.curves or scene.textures
+  Color color{};
+};
+
+struct CompiledSegment {
+  Segment geom;
+  int primitive = 0;  // id in CompiledScene::primitives
+  int index = 0;      // segment number within its curve or texture (from point `index`)
+  double half_width = 0.0;  // w_0 (textures only)
+};
+
+struct CompiledScene {
+  std::string source;
+  CameraFrame camera;
+  Color background{};
+  std::vector<Primitive> primitives;
+  std::vector<CompiledSegment> curve_segments;
+  std::vector<CompiledSegment> texture_segments;
+  ClassificationGrid texture_grid;  // over texture_segments
+};
+
+// Derives missing normals, builds every segment's constants and the classification grid.
+// Throws rpu::Error naming the source and JSON path on degenerate geometry: repeated
+// consecutive points, a normal parallel to its segment, a zero normal.
+CompiledScene compile_scene(const Scene& scene);
+
+}  // namespace rpu::scene

@@ -1,0 +1,53 @@
+// The scene as written in a scene file (SCENE.md), after validation, before compilation.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/vec3.h"
+
+namespace rpu::scene {
+
+using Color = std::array<double, 3>;  // linear RGB, each in [0, 1]
+
+struct Camera {
+  Vec3 eye;
+  Vec3 target;
+  Vec3 up;
+  double fov_deg = 40.0;  // full horizontal field of view, in (0, 180)
+  int width = 0;
+  int height = 0;
+};
+
+// A spatial curve (ALGORITHM 1): a polyline smoothed by spherical interpolation.
+struct Curve {
+  std::vector<Vec3> points;
+  std::vector<Vec3> normals;  // empty when the file gives none (then derived, ALGORITHM 1)
+  bool closed = false;
+  Color color{1.0, 1.0, 1.0};
+};
+
+// A vector texture on the plane z = 0 (ALGORITHM 2). Points and normals have z = 0.
+struct Texture {
+  std::vector<Vec3> points;
+  std::vector<Vec3> normals;  // empty when the file gives none
+  bool closed = false;
+  double half_width = 0.0;  // w_0
+  Color color{1.0, 1.0, 1.0};
+};
+
+struct Scene {
+  std::string source;  // file name (or "<name>" for embedded scenes), for error messages
+  Camera camera;
+  Color background{0.0, 0.0, 0.0};
+  std::vector<Curve> curves;
+  std::vector<Texture> textures;
+};
+
+// Largest accepted image side and pixel count: bigger requests are refused, not attempted.
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr long long kMaxImagePixels = 1LL << 26;
+
+}  // namespace rpu::scene

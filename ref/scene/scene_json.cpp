@@ -1,0 +1,315 @@
+#include "scene/scene_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+
+namespace rpu::scene {
+namespace {
+
+using Json = nlohmann::json;
+
+// A location in the scene file: the source name and a JSON path ("" is the top level).
+struct Where {
+  const std::string& source;
+  std::string path;
+
+  Where key(std::string_view k) const {
+    return {source, path.empty() ? std::string(k) : path + "." + std::string(k)};
+  }
+  Where index(size_t i) const { return {source, path + "[" + std::to_string(i) + "]"}; }
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw Error(path.empty() ? source : source + ": " + path, problem);
+  }
+};
+
+// What a JSON value is, for "got ..." in messages.
+std::string describe(const Json& j) {
+  switch (j.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return j.get<bool>() ? "true" : "false";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array:
+      return j.empty() ? "an empty array" : "an array of " + std::to_string(j.size());
+    default: return j.dump();  // a number: its shortest text
+  }
+}
+
+// Tracks the JSON path of the value being parsed, so that errors raised inside nlohmann's
+// parser (duplicate keys, number overflow) can name a path.
+struct ParsePath {
+  struct Frame {
+    bool array = false;
+    size_t next_index = 0;  // arrays: index of the next element
+    std::string key;        // objects: the last key read
+    std::set<std::string> keys;
+    std::string path;
+  };
+  std::vector<Frame> stack;
+
+  // Path of the value that starts now (inside the innermost container).
+  std::string current() const {
+    if (stack.empty()) return "";
+    const Frame& f = stack.back();
+    if (f.array) return f.path + "[" + std::to_string(f.next_index) + "]";
+    return f.path.empty() ? f.key : f.path + "." + f.key;
+  }
+  void element_done() {
+    if (!stack.empty() && stack.back().array) ++stack.back().next_index;
+  }
+  // nlohmann parser callback: keeps every value, rejects duplicate keys.
+  bool on_event(Json::parse_event_t event, const Json& parsed, const std::string& source) {
+    using E = Json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start: stack.push_back({event == E::array_start, 0, "", {}, current()}); break;
+      case E::object_end:
+      case E::array_end:
+        stack.pop_back();
+        element_done();
+        break;
+      case E::key: {
+        Frame& f = stack.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second)
+          Where{source, f.path}.fail("duplicate key '" + f.key + "'; each key may appear once");
+        break;
+      }
+      case E::value: element_done(); break;
+    }
+    return true;
+  }
+};
+
+// 1-based line and column of the 1-based byte offset `byte` in `text`.
+std::string line_column(const std::string& text, size_t byte) {
+  const size_t at = std::min(byte > 0 ? byte - 1 : 0, text.size());
+  const size_t line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+  const size_t nl = text.rfind('\n', at == 0 ? std::string::npos : at - 1);
+  const size_t column = (at == 0 || nl == std::string::npos) ? at + 1 : at - nl;
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+Json parse_json(const std::string& text, const std::string& source) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    Where{source, ""}.fail("the file is empty; expected a JSON object with a 'camera' key");
+  ParsePath path;
+  try {
+    return Json::parse(text, [&](int, Json::parse_event_t event, Json& parsed) {
+      return path.on_event(event, parsed, source);
+    });
+  } catch (const Json::parse_error& e) {
+    // nlohmann's message: "[json.exception.parse_error.N] parse error at line L, column C: ..."
+    const std::string what = e.what();
+    const size_t colon = what.find(": ", what.find("column"));
+    const std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+    Where{source, ""}.fail("invalid JSON at " + line_column(text, e.byte) + ": " + detail);
+  } catch (const Json::out_of_range& e) {
+    if (e.id != 406) throw;
+    // A number literal too large for a double (e.g. 1e999).
+    Where{source, path.current()}.fail("not a finite number (it overflows a double); expected a "
+                                       "finite number");
+  }
+}
+
+// Checks that `j` is an object whose keys are all in `allowed`.
+void expect_object(const Json& j, const Where& w, std::initializer_list<std::string_view> allowed) {
+  if (!j.is_object()) w.fail("expected an object, got " + describe(j));
+  for (const auto& [k, v] : j.items()) {
+    bool known = false;
+    for (const auto a : allowed) known = known || a == k;
+    if (!known) {
+      std::string list;
+      for (const auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      w.key(k).fail("unknown key '" + k + "'; expected one of: " + list);
+    }
+  }
+}
+
+const Json& required(const Json& obj, const Where& w, const char* key) {
+  const auto it = obj.find(key);
+  if (it == obj.end()) w.fail(std::string("missing required key '") + key + "'");
+  return *it;
+}
+
+const Json* find_key(const Json& obj, const char* key) {
+  const auto it = obj.find(key);
+  return it == obj.end() ? nullptr : &*it;
+}
+
+double number(const Json& j, const Where& w) {
+  if (!j.is_number()) w.fail("expected a number, got " + describe(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) w.fail("not a finite number; expected a finite number");
+  return v;
+}
+
+bool boolean(const Json& j, const Where& w) {
+  if (!j.is_boolean()) w.fail("expected true or false, got " + describe(j));
+  return j.get<bool>();
+}
+
+// An array of exactly `dims` (2 or 3) finite numbers; z = 0 when dims is 2.
+Vec3 vec(const Json& j, const Where& w, size_t dims) {
+  const std::string expected = "expected an array of " + std::to_string(dims) + " numbers";
+  if (!j.is_array()) w.fail(expected + ", got " + describe(j));
+  if (j.size() != dims) w.fail(expected + ", got " + describe(j));
+  double c[3] = {0.0, 0.0, 0.0};
+  for (size_t i = 0; i < dims; ++i) c[i] = number(j[i], w.index(i));
+  return {c[0], c[1], c[2]};
+}
+
+Color color(const Json& j, const Where& w) {
+  const Vec3 v = vec(j, w, 3);
+  const Color c{v.x, v.y, v.z};
+  for (size_t i = 0; i < 3; ++i)
+    if (!(c[i] >= 0.0 && c[i] <= 1.0))
+      w.index(i).fail("colour component must be in [0, 1], got " + j[i].dump());
+  return c;
+}
+
+// Image width or height: a whole number in [1, kMaxImageSide].
+int image_side(const Json& j, const Where& w) {
+  const double v = number(j, w);
+  if (v != std::floor(v)) w.fail("expected a whole number of pixels, got " + j.dump());
+  if (v < 1) w.fail("image width and height must be at least 1 pixel, got " + j.dump());
+  if (v > kMaxImageSide)
+    w.fail("must be at most " + std::to_string(kMaxImageSide) +
+           " pixels (the largest supported image side), got " + j.dump());
+  return static_cast<int>(v);
+}
+
+Camera camera(const Json& j, const Where& w) {
+  expect_object(j, w, {"eye", "target", "up", "fov_deg", "width", "height"});
+  Camera cam;
+  cam.eye = vec(required(j, w, "eye"), w.key("eye"), 3);
+  cam.target = vec(required(j, w, "target"), w.key("target"), 3);
+  cam.up = vec(required(j, w, "up"), w.key("up"), 3);
+  cam.fov_deg = number(required(j, w, "fov_deg"), w.key("fov_deg"));
+  if (!(cam.fov_deg > 0.0 && cam.fov_deg < 180.0))
+    w.key("fov_deg").fail("expected a field of view strictly between 0 and 180 degrees, got " +
+                          j["fov_deg"].dump());
+  cam.width = image_side(required(j, w, "width"), w.key("width"));
+  cam.height = image_side(required(j, w, "height"), w.key("height"));
+  const long long pixels = static_cast<long long>(cam.width) * cam.height;
+  if (pixels > kMaxImagePixels)
+    w.fail("image of " + std::to_string(cam.width) + " x " + std::to_string(cam.height) + " = " +
+           std::to_string(pixels) + " pixels exceeds the limit of " +
+           std::to_string(kMaxImagePixels) + " pixels");
+  return cam;
+}
+
+// Points and normals of a polyline (curve: dims = 3, texture: dims = 2) and its `closed` flag.
+template <class Polyline>
+void polyline(const Json& j, const Where& w, size_t dims, const char* kind, Polyline& out) {
+  if (const Json* c = find_key(j, "closed")) out.closed = boolean(*c, w.key("closed"));
+
+  const Where wp = w.key("points");
+  const Json& pts = required(j, w, "points");
+  if (!pts.is_array()) wp.fail("expected an array of points, got " + describe(pts));
+  const size_t min_points = out.closed ? 3 : 2;
+  if (pts.size() < min_points)
+    wp.fail(std::string("a ") + (out.closed ? "closed " : "") + kind + " needs at least " +
+            std::to_string(min_points) + " points, got " + std::to_string(pts.size()) +
+            (out.closed ? " (a closed polyline of 2 points would trace one segment twice)" : ""));
+  for (size_t i = 0; i < pts.size(); ++i) out.points.push_back(vec(pts[i], wp.index(i), dims));
+
+  // Zero-length segments, including the closing one (reported at its end point, points[0]).
+  const size_t n = out.points.size();
+  for (size_t b = 1; b <= (out.closed ? n : n - 1); ++b) {
+    const size_t a = b - 1;
+    if (out.points[a] == out.points[b % n])
+      wp.index(b % n).fail("repeated consecutive point (same as points[" + std::to_string(a) +
+                           "]); the segment would have zero length" +
+                           (b == n ? " (a closed polyline returns to points[0] by itself)" : ""));
+  }
+
+  if (const Json* nrm = find_key(j, "normals")) {
+    const Where wn = w.key("normals");
+    if (!nrm->is_array()) wn.fail("expected an array of normals, got " + describe(*nrm));
+    if (nrm->size() != n)
+      wn.fail("expected one normal per point (" + std::to_string(n) + "), got " +
+              std::to_string(nrm->size()));
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3 v = vec((*nrm)[i], wn.index(i), dims);
+      if (v == Vec3{}) wn.index(i).fail("normal is the zero vector; expected a non-zero direction");
+      out.normals.push_back(v);
+    }
+  }
+  if (const Json* c = find_key(j, "color")) out.color = color(*c, w.key("color"));
+}
+
+Curve curve(const Json& j, const Where& w) {
+  expect_object(j, w, {"points", "normals", "closed", "color"});
+  Curve c;
+  polyline(j, w, 3, "curve", c);
+  return c;
+}
+
+Texture texture(const Json& j, const Where& w) {
+  expect_object(j, w, {"points", "normals", "closed", "half_width", "color"});
+  Texture t;
+  polyline(j, w, 2, "texture", t);
+  const Json& hw = required(j, w, "half_width");
+  t.half_width = number(hw, w.key("half_width"));
+  if (!(t.half_width > 0.0))
+    w.key("half_width").fail("half_width must be greater than 0, got " + hw.dump());
+  return t;
+}
+
+// An array whose elements are read by `element`.
+template <class T, class F>
+std::vector<T> array_of(const Json& j, const Where& w, const char* what, F element) {
+  if (!j.is_array()) w.fail(std::string("expected an array of ") + what + ", got " + describe(j));
+  std::vector<T> out;
+  for (size_t i = 0; i < j.size(); ++i) out.push_back(element(j[i], w.index(i)));
+  return out;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source) {
+  const Json j = parse_json(text, source);
+  const Where top{source, ""};
+  if (!j.is_object())
+    top.fail("expected a JSON object at the top level, got " + describe(j));
+  expect_object(j, top, {"about", "camera", "background", "curves", "textures"});
+
+  Scene scene;
+  scene.source = source;
+  if (const Json* a = find_key(j, "about"); a && !a->is_string())
+    top.key("about").fail("expected a string (a free description), got " + describe(*a));
+  scene.camera = camera(required(j, top, "camera"), top.key("camera"));
+  if (const Json* b = find_key(j, "background"))
+    scene.background = color(*b, top.key("background"));
+  if (const Json* c = find_key(j, "curves"))
+    scene.curves = array_of<Curve>(*c, top.key("curves"), "curves", curve);
+  if (const Json* t = find_key(j, "textures"))
+    scene.textures = array_of<Texture>(*t, top.key("textures"), "textures", texture);
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  const Where file{path, ""};
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) file.fail("is a directory, not a scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) file.fail("cannot open the scene file (missing or unreadable)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) file.fail("cannot read the scene file");
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace rpu::scene

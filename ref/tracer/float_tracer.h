@@ -1,0 +1,71 @@
+// The double-precision ray tracer: the yardstick for the fixed-point model and the RTL.
+//   kIdeal     (`--backend float`):    per segment, the curve point of closest approach to the
+//                                      pixel-centre ray by a global search, then the PVP capture.
+//   kIterative (`--backend float-ip`): the seeds' iterative process (ALGORITHM 1.2) exactly.
+// Vector textures (ALGORITHM 2) have no iteration and render the same in both methods.
+#pragma once
+
+#include <cstdint>
+
+#include "image/frame.h"
+#include "scene/compiled_scene.h"
+
+namespace rpu::tracer {
+
+enum class Method { kIdeal, kIterative };
+
+struct FloatOptions {
+  Method method = Method::kIdeal;
+  int n = 16;            // result bits of the iterative process
+  int n1 = 2;            // bits per step; K = n / n1 steps
+  bool binning = true;   // screen-space binning of curve segments (never changes the image)
+  bool grid = true;      // texture classification grid (never changes the image)
+  int threads = 0;       // 0 = all hardware threads
+};
+
+// Largest n1: 2^n1 candidates are evaluated in parallel per step, 256 is already far beyond
+// what an FPGA datapath would replicate.
+inline constexpr int kMaxN1 = 8;
+
+// Validates n and n1 (1 ≤ n1 ≤ kMaxN1, n1 ≤ n ≤ 52, n a multiple of n1); throws rpu::Error naming the flag.
+void check_ip_parameters(int n, int n1);
+
+struct RenderStats {
+  std::uint64_t pairs_tested = 0;   // ray/segment pairs examined after binning
+  std::uint64_t pairs_hit = 0;      // pairs whose test point was captured
+};
+
+image::Frame render_float(const scene::CompiledScene& scene, const FloatOptions& options,
+                          RenderStats* stats = nullptr);
+
+// ---- one ray/segment pair, exposed for tests and benchmarks ----
+
+struct PairResult {
+  bool hit = false;
+  double depth = 0.0;  // c of the captured point
+  double t = 0.0;      // chord parameter of the test point
+  Vec3 point;          // the test point s(t)
+};
+
+// The interpolation sphere test pred_1 and the search interval (ALGORITHM 1.2 steps 1–2): the
+// roots t1 ≤ t2 of ray/sphere, t1 clamped to 0 when the eye is inside. False when the ray misses
+// the sphere or meets it only behind the eye.
+bool interpolation_interval(const Vec3& eye, const Vec3& v, const scene::Segment& s, double& t1,
+                            double& t2);
+
+// The iterative process on pixel (i, j) against one segment; `tau` receives τ_K.
+PairResult iterative_pair(const scene::CameraFrame& cam, const scene::Segment& s, int i, int j,
+                          int n, int n1, double* tau = nullptr);
+
+// Ideal semantics on pixel (i, j): the curve point nearest to the pixel-centre ray in angle
+// (64 samples, then golden-section refinement of the three best local minima), then capture.
+PairResult ideal_pair(const scene::CameraFrame& cam, const scene::Segment& s, int i, int j);
+
+// Conservative cull: false only when the pixel's pyramid cannot meet the segment's
+// interpolation sphere (so no point of its curve can be captured).
+bool pvp_may_meet_sphere(const scene::CameraFrame& cam, const scene::Segment& s, int i, int j);
+
+// Texture predicates pr1 ∧ (pr2 ∨ pr3) of ALGORITHM 2 for the plane point p0.
+bool texture_covers(const scene::CompiledSegment& s, const Vec3& p0);
+
+}  // namespace rpu::tracer

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Sets up everything (system packages), builds, and runs the default test suite under CTest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/setup.sh
+./scripts/build.sh
+ctest --test-dir build --output-on-failure -j"$(nproc)"

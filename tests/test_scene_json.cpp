@@ -1,0 +1,390 @@
+// Strict scene-file parsing (SCENE.md): a valid scene round-trips, defaults apply, and every
+// kind of malformed input is rejected with the source name, the exact JSON path and the problem.
+#include "scene/scene_json.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+
+namespace rpu::scene {
+namespace {
+
+// A valid scene using every key; malformed cases are made from it by one substitution.
+std::string full_scene() {
+  return R"({
+  "about": "test scene",
+  "camera": {"eye": [0, -12, 6], "target": [0, 0, 0], "up": [0, 0, 1],
+             "fov_deg": 40, "width": 256, "height": 128},
+  "background": [0.1, 0.2, 0.3],
+  "curves": [
+    {"points": [[1, 0, 0], [0, 1, 0.5], [-1, 0, 1]],
+     "normals": [[-1, 0, 0], [0, -1, 0], [1, 0, 0]],
+     "closed": false,
+     "color": [1.0, 0.8, 0.2]},
+    {"points": [[0, 0, 2], [1, 0, 2], [1, 1, 2], [0, 1, 2]], "closed": true}
+  ],
+  "textures": [
+    {"points": [[0, 0], [4, 1], [6, 4]],
+     "normals": [[0.24, -0.97], [0, -1], [-0.8, -0.6]],
+     "closed": false,
+     "half_width": 0.05,
+     "color": [0.5, 1.0, 0.0]}
+  ]
+})";
+}
+
+// full_scene() with the single occurrence of `from` replaced by `to`.
+std::string mutate(const std::string& from, const std::string& to) {
+  std::string s = full_scene();
+  const size_t at = s.find(from);
+  if (at == std::string::npos || s.find(from, at + 1) != std::string::npos)
+    throw std::logic_error("test bug: '" + from + "' must occur exactly once");
+  return s.replace(at, from.size(), to);
+}
+
+// A scene with a valid camera and the given extra top-level members.
+std::string with_camera(const std::string& members) {
+  return R"({"camera": {"eye": [0, -12, 6], "target": [0, 0, 0], "up": [0, 0, 1],
+  "fov_deg": 40, "width": 64, "height": 48})" +
+         (members.empty() ? "" : ", " + members) + "}";
+}
+
+constexpr const char* kSource = "scene.json";
+
+struct BadCase {
+  std::string name;
+  std::string json;
+  std::string path;     // exact JSON path; "" for the top level
+  std::string problem;  // substring of the problem
+};
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+std::vector<BadCase> bad_cases() {
+  const std::string curve_ok = R"({"points": [[0, 0, 0], [1, 0, 0]]})";
+  return {
+      // File level.
+      {"empty", "", "", "empty"},
+      {"blank", " \n\t\r\n ", "", "empty"},
+      {"syntax_missing_comma", "{\n  \"camera\": {}\n  \"curves\": []\n}", "",
+       "invalid JSON at line 3, column 10"},
+      {"syntax_trailing_comma", mutate(R"("color": [0.5, 1.0, 0.0]})", R"("color": [0.5, 1.0, 0.0],})"),
+       "", "invalid JSON at line 18"},
+      {"syntax_comment", "// a scene\n{}", "", "invalid JSON at line 1"},
+      {"syntax_trailing_garbage", full_scene() + "\n}", "", "invalid JSON at line 21, column 1"},
+      {"syntax_unterminated", R"({"camera": {"eye": [0, 0)", "", "invalid JSON"},
+      {"top_level_array", "[1, 2]", "", "expected a JSON object at the top level, got an array"},
+      {"top_level_string", R"("scene")", "", "at the top level, got a string"},
+      {"duplicate_top_key",
+       mutate(R"("background": [0.1, 0.2, 0.3],)", R"("background": [0.1, 0.2, 0.3], "background": [0, 0, 0],)"),
+       "", "duplicate key 'background'"},
+      {"unknown_top_key", mutate(R"("background":)", R"("backgrund":)"), "backgrund",
+       "unknown key 'backgrund'"},
+      {"about_not_string", mutate(R"("about": "test scene")", R"("about": 7)"), "about",
+       "expected a string"},
+      // Camera.
+      {"missing_camera", R"({"curves": []})", "", "missing required key 'camera'"},
+      {"camera_not_object", R"({"camera": [0, 1]})", "camera", "expected an object, got an array"},
+      {"camera_unknown_key", mutate(R"("fov_deg": 40)", R"("fov": 40)"), "camera.fov",
+       "unknown key 'fov'"},
+      {"camera_key_case", mutate(R"("eye":)", R"("Eye":)"), "camera.Eye", "unknown key 'Eye'"},
+      {"camera_missing_up", mutate(R"(, "up": [0, 0, 1])", ""), "camera",
+       "missing required key 'up'"},
+      {"eye_string", mutate("[0, -12, 6]", R"("0 -12 6")"), "camera.eye",
+       "expected an array of 3 numbers, got a string"},
+      {"eye_object", mutate("[0, -12, 6]", R"({"x": 0})"), "camera.eye", "got an object"},
+      {"eye_two_numbers", mutate("[0, -12, 6]", "[0, -12]"), "camera.eye",
+       "expected an array of 3 numbers, got an array of 2"},
+      {"eye_element_string", mutate("[0, -12, 6]", R"([0, "-12", 6])"), "camera.eye[1]",
+       "expected a number, got a string"},
+      {"eye_overflow", mutate("[0, -12, 6]", "[0, -12, 1e999]"), "camera.eye[2]",
+       "not a finite number"},
+      {"target_negative_overflow", mutate("[0, 0, 0]", "[-1e999, 0, 0]"), "camera.target[0]",
+       "not a finite number"},
+      {"fov_zero", mutate(R"("fov_deg": 40)", R"("fov_deg": 0)"), "camera.fov_deg",
+       "between 0 and 180"},
+      {"fov_180", mutate(R"("fov_deg": 40)", R"("fov_deg": 180)"), "camera.fov_deg",
+       "between 0 and 180"},
+      {"fov_string", mutate(R"("fov_deg": 40)", R"("fov_deg": "40")"), "camera.fov_deg",
+       "expected a number, got a string"},
+      {"fov_bool", mutate(R"("fov_deg": 40)", R"("fov_deg": true)"), "camera.fov_deg",
+       "expected a number, got true"},
+      {"width_zero", mutate(R"("width": 256)", R"("width": 0)"), "camera.width", "at least 1"},
+      {"height_negative", mutate(R"("height": 128)", R"("height": -3)"), "camera.height",
+       "at least 1"},
+      {"width_fraction", mutate(R"("width": 256)", R"("width": 2.5)"), "camera.width",
+       "whole number"},
+      {"width_too_large", mutate(R"("width": 256)", R"("width": 20000)"), "camera.width",
+       "at most 16384"},
+      {"too_many_pixels",
+       mutate(R"("width": 256, "height": 128)", R"("width": 16384, "height": 8192)"), "camera",
+       "exceeds the limit of 67108864 pixels"},
+      {"width_overflow", mutate(R"("width": 256)", R"("width": 1e999)"), "camera.width",
+       "not a finite number"},
+      {"width_null", mutate(R"("width": 256)", R"("width": null)"), "camera.width",
+       "expected a number, got null"},
+      // Background.
+      {"background_four", mutate("[0.1, 0.2, 0.3]", "[0.1, 0.2, 0.3, 1]"), "background",
+       "expected an array of 3 numbers, got an array of 4"},
+      {"background_above_one", mutate("[0.1, 0.2, 0.3]", "[0.1, 1.5, 0.3]"), "background[1]",
+       "[0, 1]"},
+      {"background_negative", mutate("[0.1, 0.2, 0.3]", "[-0.1, 0.2, 0.3]"), "background[0]",
+       "[0, 1]"},
+      // Curves.
+      {"curves_object", with_camera(R"("curves": {"points": []})"), "curves",
+       "expected an array of curves, got an object"},
+      {"curve_not_object", with_camera(R"("curves": [[1, 2, 3]])"), "curves[0]",
+       "expected an object, got an array"},
+      {"curve_unknown_key", mutate(R"("color": [1.0, 0.8, 0.2])", R"("colour": [1.0, 0.8, 0.2])"),
+       "curves[0].colour", "unknown key 'colour'"},
+      {"curve_missing_points", with_camera(R"("curves": [{"closed": false}])"), "curves[0]",
+       "missing required key 'points'"},
+      {"curve_one_point", with_camera(R"("curves": [{"points": [[0, 0, 0]]}])"),
+       "curves[0].points", "at least 2 points, got 1"},
+      {"curve_no_points", with_camera(R"("curves": [{"points": []}])"), "curves[0].points",
+       "at least 2 points, got 0"},
+      {"curve_points_string", with_camera(R"("curves": [{"points": "none"}])"), "curves[0].points",
+       "expected an array of points, got a string"},
+      {"curve_point_two_numbers", mutate("[0, 1, 0.5]", "[0, 1]"), "curves[0].points[1]",
+       "expected an array of 3 numbers, got an array of 2"},
+      {"curve_point_four_numbers", mutate("[0, 1, 0.5]", "[0, 1, 0.5, 1]"), "curves[0].points[1]",
+       "expected an array of 3 numbers, got an array of 4"},
+      {"curve_point_number", mutate("[0, 1, 0.5]", "7"), "curves[0].points[1]",
+       "expected an array of 3 numbers, got 7"},
+      {"curve_point_null_coordinate", mutate("[0, 1, 0.5]", "[0, null, 0.5]"),
+       "curves[0].points[1][1]", "expected a number, got null"},
+      {"curve_point_overflow", mutate("[0, 1, 0.5]", "[0, 1, 1e999]"), "curves[0].points[1][2]",
+       "not a finite number"},
+      {"curve_repeated_point", mutate("[0, 1, 0.5], [-1", "[0, 1, 0.5], [0, 1, 0.5], [-1"),
+       "curves[0].points[2]",
+       "repeated consecutive point (same as points[1]); the segment would have zero length"},
+      {"closed_repeats_first", mutate("[0, 1, 2]]", "[0, 1, 2], [0, 0, 2]]"), "curves[1].points[0]",
+       "repeated consecutive point (same as points[4])"},
+      {"closed_two_points", with_camera(R"("curves": [{"points": [[0, 0, 0], [1, 0, 0]], "closed": true}])"),
+       "curves[0].points", "closed curve needs at least 3 points, got 2"},
+      {"closed_string", mutate(R"("closed": true)", R"("closed": "yes")"), "curves[1].closed",
+       "expected true or false, got a string"},
+      {"closed_number", mutate(R"("closed": true)", R"("closed": 1)"), "curves[1].closed",
+       "expected true or false, got 1"},
+      {"duplicate_curve_key", mutate(R"("closed": true)", R"("closed": true, "closed": false)"),
+       "curves[1]", "duplicate key 'closed'"},
+      {"normals_count", mutate("[0, -1, 0], [1, 0, 0]]", "[0, -1, 0]]"), "curves[0].normals",
+       "one normal per point (3), got 2"},
+      {"normals_not_array", mutate("[[-1, 0, 0], [0, -1, 0], [1, 0, 0]]", "5"),
+       "curves[0].normals", "expected an array of normals, got 5"},
+      {"normal_zero", mutate("[0, -1, 0]", "[0, 0, 0]"), "curves[0].normals[1]", "zero vector"},
+      {"normal_negative_zero", mutate("[0, -1, 0]", "[-0.0, 0, -0]"), "curves[0].normals[1]",
+       "zero vector"},
+      {"normal_two_numbers", mutate("[1, 0, 0]]", "[1, 0]]"), "curves[0].normals[2]",
+       "expected an array of 3 numbers, got an array of 2"},
+      {"normal_overflow", mutate("[-1, 0, 0]", "[-1e999, 0, 0]"), "curves[0].normals[0][0]",
+       "not a finite number"},
+      {"curve_color_above_one", mutate("[1.0, 0.8, 0.2]", "[1.0, 0.8, 2]"), "curves[0].color[2]",
+       "[0, 1]"},
+      {"curve_color_string", mutate("[1.0, 0.8, 0.2]", R"("white")"), "curves[0].color",
+       "expected an array of 3 numbers, got a string"},
+      {"third_curve", with_camera(R"("curves": [)" + curve_ok + ", " + curve_ok +
+                                  R"(, {"points": [[0, 0], [1, 0, 0]]}])"),
+       "curves[2].points[0]", "expected an array of 3 numbers, got an array of 2"},
+      // Textures.
+      {"textures_not_array", with_camera(R"("textures": 3)"), "textures",
+       "expected an array of textures, got 3"},
+      {"texture_unknown_key", mutate(R"("half_width": 0.05)", R"("width": 0.05)"),
+       "textures[0].width", "unknown key 'width'"},
+      {"texture_missing_half_width", with_camera(R"("textures": [{"points": [[0, 0], [1, 0]]}])"),
+       "textures[0]", "missing required key 'half_width'"},
+      {"half_width_zero", mutate(R"("half_width": 0.05)", R"("half_width": 0)"),
+       "textures[0].half_width", "greater than 0"},
+      {"half_width_negative", mutate(R"("half_width": 0.05)", R"("half_width": -0.05)"),
+       "textures[0].half_width", "greater than 0"},
+      {"half_width_string", mutate(R"("half_width": 0.05)", R"("half_width": "0.05")"),
+       "textures[0].half_width", "expected a number, got a string"},
+      {"half_width_overflow", mutate(R"("half_width": 0.05)", R"("half_width": 1e400)"),
+       "textures[0].half_width", "not a finite number"},
+      {"texture_point_3d", mutate("[4, 1]", "[4, 1, 0]"), "textures[0].points[1]",
+       "expected an array of 2 numbers, got an array of 3"},
+      {"texture_point_overflow", mutate("[6, 4]", "[6, 4e400]"), "textures[0].points[2][1]",
+       "not a finite number"},
+      {"texture_repeated_point", mutate("[[0, 0], [4, 1]", "[[0, 0], [0, 0]"),
+       "textures[0].points[1]", "repeated consecutive point (same as points[0])"},
+      {"texture_closed_two_points",
+       with_camera(R"("textures": [{"points": [[0, 0], [1, 0]], "closed": true, "half_width": 1}])"),
+       "textures[0].points", "closed texture needs at least 3 points, got 2"},
+      {"texture_normal_zero", mutate("[0, -1]", "[0, 0]"), "textures[0].normals[1]",
+       "zero vector"},
+      {"texture_normal_3d", mutate("[0.24, -0.97]", "[0.24, -0.97, 0]"), "textures[0].normals[0]",
+       "expected an array of 2 numbers, got an array of 3"},
+      {"texture_normals_count", mutate("[0, -1], [-0.8, -0.6]]", "[0, -1]]"),
+       "textures[0].normals", "one normal per point (3), got 2"},
+      {"texture_color_negative", mutate("[0.5, 1.0, 0.0]", "[0.5, 1.0, -1]"),
+       "textures[0].color[2]", "[0, 1]"},
+  };
+}
+
+// Asserts that parsing `json` throws an rpu::Error at `path` whose problem contains `problem`.
+void expect_rejected(const std::string& json, const std::string& path, const std::string& problem) {
+  try {
+    parse_scene(json, kSource);
+    ADD_FAILURE() << "accepted, expected an error at '" << path << "'";
+  } catch (const Error& e) {
+    const std::string where = path.empty() ? kSource : std::string(kSource) + ": " + path;
+    EXPECT_EQ(e.where(), where) << e.what();
+    EXPECT_NE(std::string(e.what()).find(where + ": "), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find(problem), std::string::npos)
+        << "problem '" << e.problem() << "' lacks '" << problem << "'";
+  }
+}
+
+class MalformedScene : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(MalformedScene, RejectedWithPathAndProblem) {
+  expect_rejected(GetParam().json, GetParam().path, GetParam().problem);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, MalformedScene, ::testing::ValuesIn(bad_cases()),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(SceneJson, FullSceneRoundTrips) {
+  const Scene s = parse_scene(full_scene(), kSource);
+  EXPECT_EQ(s.source, kSource);
+  EXPECT_EQ(s.camera.eye, (Vec3{0, -12, 6}));
+  EXPECT_EQ(s.camera.target, (Vec3{0, 0, 0}));
+  EXPECT_EQ(s.camera.up, (Vec3{0, 0, 1}));
+  EXPECT_EQ(s.camera.fov_deg, 40.0);
+  EXPECT_EQ(s.camera.width, 256);
+  EXPECT_EQ(s.camera.height, 128);
+  EXPECT_EQ(s.background, (Color{0.1, 0.2, 0.3}));
+
+  ASSERT_EQ(s.curves.size(), 2u);
+  const Curve& c0 = s.curves[0];
+  EXPECT_EQ(c0.points, (std::vector<Vec3>{{1, 0, 0}, {0, 1, 0.5}, {-1, 0, 1}}));
+  EXPECT_EQ(c0.normals, (std::vector<Vec3>{{-1, 0, 0}, {0, -1, 0}, {1, 0, 0}}));
+  EXPECT_FALSE(c0.closed);
+  EXPECT_EQ(c0.color, (Color{1.0, 0.8, 0.2}));
+  const Curve& c1 = s.curves[1];
+  EXPECT_EQ(c1.points, (std::vector<Vec3>{{0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}}));
+  EXPECT_TRUE(c1.normals.empty());
+  EXPECT_TRUE(c1.closed);
+  EXPECT_EQ(c1.color, (Color{1, 1, 1}));
+
+  ASSERT_EQ(s.textures.size(), 1u);
+  const Texture& t = s.textures[0];
+  EXPECT_EQ(t.points, (std::vector<Vec3>{{0, 0, 0}, {4, 1, 0}, {6, 4, 0}}));
+  EXPECT_EQ(t.normals, (std::vector<Vec3>{{0.24, -0.97, 0}, {0, -1, 0}, {-0.8, -0.6, 0}}));
+  EXPECT_FALSE(t.closed);
+  EXPECT_EQ(t.half_width, 0.05);
+  EXPECT_EQ(t.color, (Color{0.5, 1.0, 0.0}));
+}
+
+TEST(SceneJson, Defaults) {
+  const Scene s = parse_scene(
+      with_camera(R"("curves": [{"points": [[0, 0, 0], [1, 0, 0]]}],
+                     "textures": [{"points": [[0, 0], [1, 0]], "half_width": 0.5}])"),
+      "<defaults>");
+  EXPECT_EQ(s.source, "<defaults>");
+  EXPECT_EQ(s.background, (Color{0, 0, 0}));
+  ASSERT_EQ(s.curves.size(), 1u);
+  EXPECT_TRUE(s.curves[0].normals.empty());
+  EXPECT_FALSE(s.curves[0].closed);
+  EXPECT_EQ(s.curves[0].color, (Color{1, 1, 1}));
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_TRUE(s.textures[0].normals.empty());
+  EXPECT_FALSE(s.textures[0].closed);
+  EXPECT_EQ(s.textures[0].color, (Color{1, 1, 1}));
+
+  const Scene empty = parse_scene(with_camera(""), kSource);
+  EXPECT_TRUE(empty.curves.empty());
+  EXPECT_TRUE(empty.textures.empty());
+  EXPECT_EQ(empty.camera.width, 64);
+  EXPECT_EQ(empty.camera.height, 48);
+}
+
+TEST(SceneJson, AcceptsEdgeValues) {
+  // Largest image allowed, integral numbers written as floats, colour bounds, a closed triangle.
+  const Scene s = parse_scene(
+      R"({"camera": {"eye": [0, -1, 0], "target": [0, 0, 0], "up": [0, 0, 1], "fov_deg": 179.5,
+                     "width": 16384.0, "height": 4096},
+          "background": [0, 1, 1e-999],
+          "curves": [{"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "closed": true,
+                      "color": [0, 0, 1]}]})",
+      kSource);
+  EXPECT_EQ(s.camera.width, 16384);
+  EXPECT_EQ(static_cast<long long>(s.camera.width) * s.camera.height, kMaxImagePixels);
+  EXPECT_EQ(s.camera.fov_deg, 179.5);
+  EXPECT_EQ(s.background, (Color{0, 1, 0}));
+  EXPECT_TRUE(s.curves[0].closed);
+  EXPECT_EQ(s.curves[0].points.size(), 3u);
+}
+
+TEST(SceneJson, SyntaxErrorReportsLineAndColumn) {
+  try {
+    parse_scene("{\n  \"camera\": {\n    \"eye\": [0, 0 0]\n  }\n}", kSource);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), kSource);
+    EXPECT_NE(e.problem().find("line 3, column 18"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneJson, LoadReportsUnreadableFiles) {
+  const std::string missing = std::string(RPU_SOURCE_DIR) + "/tests/bad_scenes/no_such_file.json";
+  try {
+    load_scene(missing);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), missing);
+    EXPECT_NE(e.problem().find("cannot open"), std::string::npos) << e.what();
+  }
+  const std::string dir = std::string(RPU_SOURCE_DIR) + "/tests/bad_scenes";
+  try {
+    load_scene(dir);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), dir);
+    EXPECT_NE(e.problem().find("directory"), std::string::npos) << e.what();
+  }
+}
+
+// Every file in tests/bad_scenes/ is rejected as expected.txt says; normal_parallel.json is
+// well-formed JSON whose defect only the scene compiler sees, so the parser accepts it.
+TEST(SceneJson, BadSceneFiles) {
+  const std::string dir = std::string(RPU_SOURCE_DIR) + "/tests/bad_scenes/";
+  std::ifstream expected(dir + "expected.txt");
+  ASSERT_TRUE(expected) << "cannot open " << dir << "expected.txt";
+  std::string line;
+  int files = 0;
+  while (std::getline(expected, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string file, path, problem;
+    ASSERT_TRUE(std::getline(fields, file, '\t') && std::getline(fields, path, '\t') &&
+                std::getline(fields, problem))
+        << "malformed line: " << line;
+    SCOPED_TRACE(file);
+    ++files;
+    if (file == "normal_parallel.json") {
+      const Scene s = load_scene(dir + file);
+      EXPECT_EQ(s.source, dir + file);
+      continue;
+    }
+    try {
+      load_scene(dir + file);
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(e.where().find(dir + file), std::string::npos) << what;
+      EXPECT_NE(e.where().find(path), std::string::npos) << what;
+      EXPECT_NE(e.problem().find(problem), std::string::npos) << what;
+    }
+  }
+  EXPECT_GE(files, 8);
+}
+
+}  // namespace
+}  // namespace rpu::scene
