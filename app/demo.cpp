@@ -46,7 +46,7 @@ int run_demo(const DemoOptions& options) {
   std::string md = fmt::format(
       "# Demo renders\n\nn = {}, n1 = {} (K = {}).\n\n"
       "| scene | size | segments | float hit px | float-ip hit px | float-ip vs float differing px "
-      "| float s | float-ip s |\n|---|---|---|---|---|---|---|---|\n",
+      "(only float / only float-ip) | float s | float-ip s |\n|---|---|---|---|---|---|---|---|\n",
       options.float_options.n, options.float_options.n1,
       options.float_options.n / options.float_options.n1);
   for (const auto& b : builtin_scenes()) {
@@ -86,12 +86,22 @@ int run_demo(const DemoOptions& options) {
                          {"seconds", times[m]}};
     }
     const size_t differ = image::count_differing_pixels(frames[0], frames[1]);
+    size_t only_float = 0, only_ip = 0;
+    for (size_t k = 0; k < frames[0].primitive.size(); ++k) {
+      const bool a = frames[0].primitive[k] != image::kBackground;
+      const bool b = frames[1].primitive[k] != image::kBackground;
+      only_float += a && !b;
+      only_ip += b && !a;
+    }
     entry["float_ip_vs_float_mismatched_pixels"] = differ;
+    entry["hit_only_in_float"] = only_float;
+    entry["hit_only_in_float_ip"] = only_ip;
     summary.push_back(entry);
-    md += fmt::format("| {} | {}×{} | {} | {} | {} | {} | {:.2f} | {:.2f} |\n", b.name,
+    md += fmt::format("| {} | {}×{} | {} | {} | {} | {} ({} / {}) | {:.3f} | {:.3f} |\n", b.name,
                       sc.camera.width, sc.camera.height,
                       compiled.curve_segments.size() + compiled.texture_segments.size(),
-                      frames[0].hit_pixels(), frames[1].hit_pixels(), differ, times[0], times[1]);
+                      frames[0].hit_pixels(), frames[1].hit_pixels(), differ, only_float, only_ip,
+                      times[0], times[1]);
     std::cout << fmt::format("{:<10} {}x{}  float {:.2f} s, float-ip {:.2f} s, differing pixels {}\n",
                              b.name, sc.camera.width, sc.camera.height, times[0], times[1], differ);
   }

@@ -55,6 +55,7 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   } else {
     throw Error("--backend", "backend '" + backend + "' is not built yet (available: float, float-ip)");
   }
+  image::check_writable(output);
   const scene::CompiledScene sc = scene::compile_scene(app::load_scene_argument(scene_arg));
   const auto t0 = std::chrono::steady_clock::now();
   tracer::RenderStats stats;
@@ -66,7 +67,7 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   if (!quiet)
     std::cerr << fmt::format("{}: {}x{} {} in {:.3f} s, {} hit pixels, {} ray/segment pairs\n",
                              output, frame.width, frame.height, backend, secs, frame.hit_pixels(),
-                             stats.pairs_tested);
+                             stats.pairs_tested + stats.texture_pairs_tested);
   return 0;
 }
 

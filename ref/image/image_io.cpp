@@ -18,6 +18,15 @@ bool is_float_format(const std::string& ext) {
 
 }  // namespace
 
+void check_writable(const std::string& path) {
+  if (!OIIO::ImageOutput::create(path))
+    throw Error(path, "cannot write this image format (" + OIIO::geterror() +
+                          "); use .png, .exr or .ppm");
+  const auto dir = std::filesystem::path(path).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw Error(path, "the directory " + dir.string() + " does not exist");
+}
+
 void write_rgb(const std::string& path, int width, int height, const std::vector<float>& rgb) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });

@@ -12,6 +12,10 @@ namespace rpu::image {
 // colour c written to png reads back as round(255·c). Throws rpu::Error naming the file.
 void write_rgb(const std::string& path, int width, int height, const std::vector<float>& rgb);
 
+// Checks, before any work is done, that `path` has a format OpenImageIO can write and that its
+// directory exists. Throws rpu::Error naming the file.
+void check_writable(const std::string& path);
+
 // Reads any image OpenImageIO can read as float RGB (for tests and comparisons).
 std::vector<float> read_rgb(const std::string& path, int& width, int& height);
 

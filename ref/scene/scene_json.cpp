@@ -51,20 +51,26 @@ std::string describe(const Json& j) {
 struct ParsePath {
   struct Frame {
     bool array = false;
-    size_t next_index = 0;  // arrays: index of the next element
+    size_t next_index = 0;  // arrays: index of the element being read
     std::string key;        // objects: the last key read
     std::set<std::string> keys;
-    std::string path;
   };
-  std::vector<Frame> stack;
+  std::vector<Frame> stack;  // open containers, outermost first
 
-  // Path of the value that starts now (inside the innermost container).
-  std::string current() const {
-    if (stack.empty()) return "";
-    const Frame& f = stack.back();
-    if (f.array) return f.path + "[" + std::to_string(f.next_index) + "]";
-    return f.path.empty() ? f.key : f.path + "." + f.key;
+  // Path of the value inside the first `depth` open containers.
+  std::string path(size_t depth) const {
+    std::string p;
+    for (size_t i = 0; i < depth; ++i) {
+      const Frame& f = stack[i];
+      if (f.array) {
+        p.append("[").append(std::to_string(f.next_index)).append("]");
+      } else {
+        p.append(p.empty() ? "" : ".").append(f.key);
+      }
+    }
+    return p;
   }
+  std::string current() const { return path(stack.size()); }
   void element_done() {
     if (!stack.empty() && stack.back().array) ++stack.back().next_index;
   }
@@ -73,7 +79,7 @@ struct ParsePath {
     using E = Json::parse_event_t;
     switch (event) {
       case E::object_start:
-      case E::array_start: stack.push_back({event == E::array_start, 0, "", {}, current()}); break;
+      case E::array_start: stack.push_back({event == E::array_start, 0, "", {}}); break;
       case E::object_end:
       case E::array_end:
         stack.pop_back();
@@ -83,7 +89,8 @@ struct ParsePath {
         Frame& f = stack.back();
         f.key = parsed.get<std::string>();
         if (!f.keys.insert(f.key).second)
-          Where{source, f.path}.fail("duplicate key '" + f.key + "'; each key may appear once");
+          Where{source, path(stack.size() - 1)}.fail("duplicate key '" + f.key +
+                                                     "'; each key may appear once");
         break;
       }
       case E::value: element_done(); break;
@@ -163,8 +170,7 @@ bool boolean(const Json& j, const Where& w) {
 // An array of exactly `dims` (2 or 3) finite numbers; z = 0 when dims is 2.
 Vec3 vec(const Json& j, const Where& w, size_t dims) {
   const std::string expected = "expected an array of " + std::to_string(dims) + " numbers";
-  if (!j.is_array()) w.fail(expected + ", got " + describe(j));
-  if (j.size() != dims) w.fail(expected + ", got " + describe(j));
+  if (!j.is_array() || j.size() != dims) w.fail(expected + ", got " + describe(j));
   double c[3] = {0.0, 0.0, 0.0};
   for (size_t i = 0; i < dims; ++i) c[i] = number(j[i], w.index(i));
   return {c[0], c[1], c[2]};

@@ -191,7 +191,8 @@ struct Hit {
   }
 };
 
-void shade_textures(const CompiledScene& sc, const FloatOptions& o, int i, int j, Hit& hit) {
+void shade_textures(const CompiledScene& sc, const FloatOptions& o, int i, int j, Hit& hit,
+                    std::uint64_t& tested) {
   if (sc.texture_segments.empty()) return;
   const CameraFrame& cam = sc.camera;
   const Vec3 v = cam.ray_direction(i, j);
@@ -202,6 +203,7 @@ void shade_textures(const CompiledScene& sc, const FloatOptions& o, int i, int j
   p0.z = 0.0;
   // depth c = (p0 - h)·W = t0·(v·W) = t0 because v·W = 1.
   const auto test = [&](const CompiledSegment& s) {
+    ++tested;
     if (s.primitive < hit.primitive || t0 < hit.depth) {
       if (texture_covers(s, p0)) hit.offer(t0, s.primitive);
     }
@@ -221,9 +223,9 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(cam, sc.curve_segments, 8, o.binning);
   std::atomic<int> next_row{0};
-  std::atomic<std::uint64_t> tested{0}, hits{0};
+  std::atomic<std::uint64_t> tested{0}, hits{0}, texture_tested{0};
   const auto worker = [&] {
-    std::uint64_t local_tested = 0, local_hits = 0;
+    std::uint64_t local_tested = 0, local_hits = 0, local_texture = 0;
     for (int j; (j = next_row.fetch_add(1)) < cam.height;) {
       for (int i = 0; i < cam.width; ++i) {
         Hit hit;
@@ -241,7 +243,7 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
             hit.offer(r.depth, cs.primitive);
           }
         }
-        shade_textures(sc, o, i, j, hit);
+        shade_textures(sc, o, i, j, hit, local_texture);
         const size_t idx = frame.index(i, j);
         frame.primitive[idx] = hit.primitive;
         frame.depth[idx] = hit.primitive == image::kBackground ? 0.0 : hit.depth;
@@ -249,6 +251,7 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
     }
     tested += local_tested;
     hits += local_hits;
+    texture_tested += local_texture;
   };
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   const unsigned n_threads = o.threads > 0 ? static_cast<unsigned>(o.threads) : hw;
@@ -259,6 +262,7 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
   if (stats) {
     stats->pairs_tested = tested;
     stats->pairs_hit = hits;
+    stats->texture_pairs_tested = texture_tested;
   }
   return frame;
 }

@@ -31,8 +31,9 @@ inline constexpr int kMaxN1 = 8;
 void check_ip_parameters(int n, int n1);
 
 struct RenderStats {
-  std::uint64_t pairs_tested = 0;   // ray/segment pairs examined after binning
-  std::uint64_t pairs_hit = 0;      // pairs whose test point was captured
+  std::uint64_t pairs_tested = 0;          // ray/curve-segment pairs examined after binning
+  std::uint64_t pairs_hit = 0;             // of those, pairs whose test point was captured
+  std::uint64_t texture_pairs_tested = 0;  // ray/texture-segment pairs listed by the grid
 };
 
 image::Frame render_float(const scene::CompiledScene& scene, const FloatOptions& options,

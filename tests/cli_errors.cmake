@@ -1,0 +1,65 @@
+# CLI contract for bad input (SCENE.md): one line on stderr naming the file, the JSON path and
+# the problem, and a non-zero exit; never a crash. Run as
+#   cmake -DRPU=path/to/rpu -DBAD=tests/bad_scenes -DOUT=dir -P cli_errors.cmake
+file(MAKE_DIRECTORY ${OUT})
+set(failures 0)
+
+function(expect_error label expected_list)
+  # ARGN: the rpu command line.
+  execute_process(COMMAND ${RPU} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  TIMEOUT 60)
+  string(STRIP "${err}" err)
+  set(ok TRUE)
+  if(rc EQUAL 0 OR NOT rc MATCHES "^[0-9]+$" OR rc GREATER 127)
+    set(ok FALSE)  # 1 = user error, 100+ = CLI11 usage error; a signal or 0 fails
+  endif()
+  foreach(part IN LISTS expected_list)
+    string(FIND "${err}" "${part}" pos)
+    if(pos EQUAL -1)
+      set(ok FALSE)
+    endif()
+  endforeach()
+  string(REGEX MATCHALL "\n" newlines "${err}")
+  list(LENGTH newlines nl)
+  if(nl GREATER 0 AND NOT label MATCHES "^usage")
+    set(ok FALSE)  # exactly one line
+  endif()
+  if(ok)
+    message(STATUS "ok   ${label}: exit ${rc}: ${err}")
+  else()
+    message(STATUS "FAIL ${label}: exit ${rc}, stderr:\n${err}\nexpected to contain: ${expected_list}")
+    math(EXPR n "${failures} + 1")
+    set(failures ${n} PARENT_SCOPE)
+  endif()
+endfunction()
+
+file(STRINGS ${BAD}/expected.txt lines)
+set(count 0)
+foreach(line IN LISTS lines)
+  string(REPLACE "\t" ";" fields "${line}")
+  list(GET fields 0 name)
+  list(GET fields 1 path)
+  list(GET fields 2 problem)
+  foreach(backend float float-ip)
+    expect_error("${name} (${backend})" "${name};${path};${problem}"
+                 render ${BAD}/${name} --backend ${backend} -o ${OUT}/bad.png)
+  endforeach()
+  math(EXPR count "${count} + 1")
+endforeach()
+
+expect_error("missing file" "no_such_scene.json" render ${BAD}/no_such_scene.json -o ${OUT}/x.png)
+expect_error("unknown builtin" "builtin:nope;no such built-in scene" render builtin:nope -o ${OUT}/x.png)
+expect_error("n not a multiple of n1" "--n;not a multiple of n1"
+             render builtin:ellipse6 --n 16 --n1 3 -o ${OUT}/x.png)
+expect_error("n1 too large" "--n1;bits per step" config --n 18 --n1 9)
+expect_error("unknown backend" "--backend;warp" render builtin:ellipse6 --backend warp -o ${OUT}/x.png)
+expect_error("unknown image format" "x.nosuchformat;image format"
+             render builtin:ellipse6 -o ${OUT}/x.nosuchformat)
+expect_error("unwritable output" "no_dir/x.png;does not exist"
+             render builtin:ellipse6 -o ${OUT}/no_dir/x.png)
+expect_error("usage: missing output" "-o" render builtin:ellipse6)
+
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} CLI error case(s) failed")
+endif()
+message(STATUS "${count} bad scene files and 8 bad command lines rejected cleanly")
