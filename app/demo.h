@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "model/hw_params.h"
 #include "tracer/float_tracer.h"
 
 namespace rpu::app {
@@ -11,6 +12,7 @@ namespace rpu::app {
 struct DemoOptions {
   std::string out_dir = "out/demo";
   tracer::FloatOptions float_options;  // n, n1, threads, binning, grid
+  ref::HwParams hw;                    // the model's parameters
   int max_side = 0;  // when > 0, scales each scene's resolution down to at most this side
 };
 

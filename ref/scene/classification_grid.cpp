@@ -11,18 +11,18 @@ namespace {
 
 // Region a texture segment can colour: within w_0 of its curve, which lies in the interpolation
 // disk (c_0, L/2), or within w_0 of an end point (pr2): all inside the disk (c_0, L/2 + w_0).
-double reach(const CompiledSegment& s) { return s.geom.R + s.half_width; }
+double reach(const CompiledSegment& s, double margin) { return s.geom.R + s.half_width + margin; }
 
 }  // namespace
 
 ClassificationGrid ClassificationGrid::build(const std::vector<CompiledSegment>& segments,
-                                             double target_per_cell) {
+                                             double target_per_cell, double margin) {
   ClassificationGrid g;
   if (segments.empty()) return g;
   double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
   double xmax = -xmin, ymax = -xmin, area = 0.0;
   for (const auto& s : segments) {
-    const double r = reach(s);
+    const double r = reach(s, margin);
     xmin = std::min(xmin, s.geom.c0.x - r);
     xmax = std::max(xmax, s.geom.c0.x + r);
     ymin = std::min(ymin, s.geom.c0.y - r);
@@ -56,7 +56,7 @@ ClassificationGrid ClassificationGrid::build(const std::vector<CompiledSegment>&
     }
     for (size_t idx = 0; idx < segments.size(); ++idx) {
       const auto& s = segments[idx];
-      const double r = reach(s);
+      const double r = reach(s, margin);
       const int i0 = clamp_cell((s.geom.c0.x - r - g.x0_) / cell, g.nx_);
       const int i1 = clamp_cell((s.geom.c0.x + r - g.x0_) / cell, g.nx_);
       const int j0 = clamp_cell((s.geom.c0.y - r - g.y0_) / cell, g.ny_);

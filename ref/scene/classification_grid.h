@@ -17,8 +17,9 @@ class ClassificationGrid {
 
   // Covers the union of the segments' regions (disk of radius L/2 + w_0 around c_0, which holds
   // every point a segment can colour) with about `target_per_cell` segments per occupied cell.
+  // `margin` grows every region (for lookups with a point known only to within that distance).
   static ClassificationGrid build(const std::vector<CompiledSegment>& segments,
-                                  double target_per_cell = 2.0);
+                                  double target_per_cell = 2.0, double margin = 0.0);
 
   // Segment indices listed for the domain containing (x, y); empty outside the grid.
   struct Span {

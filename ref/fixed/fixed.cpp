@@ -1,0 +1,45 @@
+#include "fixed/fixed.h"
+
+#include <stdexcept>
+
+namespace rpu::fixed {
+
+u128 isqrt(u128 x, int width) {
+  if (width < 1 || width > 126) throw std::invalid_argument("isqrt: width out of range");
+  if (!fits_unsigned(x, width)) throw std::invalid_argument("isqrt: radicand wider than width");
+  const int stages = (width + 1) / 2;
+  u128 root = 0, rem = 0;
+  for (int s = stages - 1; s >= 0; --s) {
+    // Bring down the next two radicand bits.
+    rem = (rem << 2) | ((x >> (2 * s)) & 3);
+    const u128 trial = (root << 2) | 1;  // (2·root + 1) aligned: 4·root + 1
+    root <<= 1;
+    if (rem >= trial) {
+      rem -= trial;
+      root |= 1;
+    }
+  }
+  return root;
+}
+
+u128 udiv(u128 dividend, u128 divisor, int quotient_width) {
+  if (divisor == 0) throw std::invalid_argument("udiv: division by zero");
+  if (quotient_width < 1 || quotient_width > 127)
+    throw std::invalid_argument("udiv: quotient width out of range");
+  // The quotient must fit: dividend < divisor · 2^quotient_width.
+  if ((dividend >> quotient_width) >= divisor)
+    throw std::invalid_argument("udiv: quotient does not fit its width");
+  u128 rem = dividend >> quotient_width;  // < divisor
+  u128 q = 0;
+  for (int s = quotient_width - 1; s >= 0; --s) {
+    rem = (rem << 1) | ((dividend >> s) & 1);
+    q <<= 1;
+    if (rem >= divisor) {
+      rem -= divisor;
+      q |= 1;
+    }
+  }
+  return q;
+}
+
+}  // namespace rpu::fixed

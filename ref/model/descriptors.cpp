@@ -1,0 +1,161 @@
+#include "model/descriptors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+
+namespace rpu::ref {
+namespace {
+
+// Minimum quantised segment length: shorter segments cannot be told from their rounding.
+constexpr double kMinSegmentLsb = 8.0;
+// Positions use at most this fraction of the signed range, leaving headroom for the sums of
+// the datapath (pr, X between range-limited end points plus guide offsets).
+constexpr double kRangeUse = 0.875;
+
+i64 round_to(double v, int frac, const char* what) {
+  const double s = std::ldexp(v, frac);
+  if (!(std::fabs(s) < 9.0e18)) throw Error(what, "value out of the 64-bit descriptor range");
+  return static_cast<i64>(std::llround(s));
+}
+
+IVec3 quantize_vec(const Vec3& v, int frac, const char* what) {
+  return {round_to(v.x, frac, what), round_to(v.y, frac, what), round_to(v.z, frac, what)};
+}
+
+struct Bounds {
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi = -lo;
+  void add(const Vec3& p, double r = 0.0) {
+    lo = {std::min(lo.x, p.x - r), std::min(lo.y, p.y - r), std::min(lo.z, p.z - r)};
+    hi = {std::max(hi.x, p.x + r), std::max(hi.y, p.y + r), std::max(hi.z, p.z + r)};
+  }
+};
+
+void check_dir(const IVec3& v, int frac, int int_bits, const std::string& source) {
+  const i64 limit = i64{1} << (frac + int_bits - 1);
+  for (i64 c : {v.x, v.y, v.z})
+    if (c >= limit || c <= -limit)
+      throw Error(source + ": camera.fov_deg",
+                  fmt::format("field of view too wide for the ray generator's direction format "
+                              "(a pixel direction component reaches {:.3g}; limit {})",
+                              std::ldexp(static_cast<double>(c), -frac), 1 << (int_bits - 1)));
+}
+
+SegmentDesc quantize_segment(const scene::CompiledSegment& cs, const Normalization& norm,
+                             const HwParams& p, const std::string& where) {
+  SegmentDesc s;
+  s.primitive = cs.primitive;
+  s.p1 = norm.position(cs.geom.p1);
+  const IVec3 p2 = norm.position(cs.geom.p2);
+  s.d = {p2.x - s.p1.x, p2.y - s.p1.y, p2.z - s.p1.z};
+  s.L2 = i128{s.d.x} * s.d.x + i128{s.d.y} * s.d.y + i128{s.d.z} * s.d.z;
+  const double L = std::sqrt(static_cast<double>(s.L2));
+  if (L < kMinSegmentLsb)
+    throw Error(where, fmt::format("segment quantises to {:.3g} LSB (minimum {}): coord_w = {} is "
+                                   "too small to hold this scene",
+                                   L, kMinSegmentLsb, p.coord_w));
+  // Centre: floor of the midpoint (within √3/2 LSB of it); radius grown by 2 LSB + 2^-20 so the
+  // quantised sphere still holds the whole curve.
+  s.c0 = {(s.p1.x + p2.x) >> 1, (s.p1.y + p2.y) >> 1, (s.p1.z + p2.z) >> 1};
+  const double R = 0.5 * L * (1.0 + 0x1p-20) + 2.0;
+  s.R2 = static_cast<i128>(std::ceil(R * R));
+  // 1/L² = inv_m · 2^-inv_s with 2^(IW-2) < inv_m ≤ 2^(IW-1): an integer division.
+  s.inv_s = p.inv_w - 2 + fixed::bit_length(static_cast<fixed::u128>(s.L2));
+  s.inv_m = static_cast<i64>(
+      fixed::udiv(fixed::u128{1} << s.inv_s, static_cast<fixed::u128>(s.L2), p.inv_w));
+  for (int k = 0; k < 2; ++k) {
+    const scene::Guide& g = cs.geom.guide[k];
+    GuideDesc& q = s.guide[k];
+    if (g.straight) continue;
+    q.u = quantize_vec(g.u, p.unit_frac, "guide direction");
+    const double h = g.h * norm.scale;
+    if (h <= HwParams::kFlatRatio * L) {
+      q.mode = GuideMode::kArc;
+      q.h = static_cast<i64>(std::llround(h));
+    } else {
+      q.a = static_cast<i64>(std::llround(static_cast<double>(s.L2) / (2.0 * h)));
+      q.b = static_cast<i64>(std::llround(std::ldexp(static_cast<double>(s.L2) / (4.0 * h * h), p.t_frac)));
+      q.mode = q.a > 0 ? GuideMode::kFlat : GuideMode::kStraight;
+    }
+  }
+  if (cs.half_width > 0.0) {
+    const double w = cs.half_width * norm.scale;
+    s.w0_2 = static_cast<i128>(std::llround(w * w));
+  }
+  return s;
+}
+
+}  // namespace
+
+IVec3 Normalization::position(const Vec3& p) const {
+  const Vec3 q = (p - offset) * scale;
+  return {static_cast<i64>(std::llround(q.x)), static_cast<i64>(std::llround(q.y)),
+          static_cast<i64>(std::llround(q.z))};
+}
+
+ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
+  p.validate();
+  ModelScene m;
+  m.source = sc.source;
+  m.params = p;
+  // Normalisation: the bounding box of the eye, every interpolation sphere and every texture
+  // region, centred and scaled into kRangeUse of the signed coord_w range.
+  Bounds b;
+  b.add(sc.camera.eye);
+  for (const auto& s : sc.curve_segments) b.add(s.geom.c0, s.geom.R);
+  for (const auto& s : sc.texture_segments) b.add(s.geom.c0, s.geom.R + s.half_width);
+  const Vec3 centre = (b.lo + b.hi) * 0.5;
+  const double half = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z}) * 0.5;
+  m.norm.offset = centre;
+  if (!sc.texture_segments.empty()) m.norm.offset.z = 0.0;  // keep the texture plane at z = 0
+  const double reach = half + std::fabs(centre.z - m.norm.offset.z);
+  m.norm.scale = reach > 0.0 ? kRangeUse * std::ldexp(1.0, p.coord_w - 1) / reach : 1.0;
+
+  const scene::CameraFrame& cam = sc.camera;
+  CameraDesc& c = m.camera;
+  c.width = cam.width;
+  c.height = cam.height;
+  c.eye = m.norm.position(cam.eye);
+  const double s = cam.sigma;
+  const Vec3 v0 = cam.W + cam.U * ((0.5 - 0.5 * cam.width) * s) + cam.V * ((0.5 * cam.height - 0.5) * s);
+  const int fv = p.dir_frac + HwParams::kRayGuard, fe = p.edge_frac + HwParams::kRayGuard;
+  c.v0 = quantize_vec(v0, fv, "camera");
+  c.dx = quantize_vec(cam.U * s, fv, "camera");
+  c.dy = quantize_vec(cam.V * -s, fv, "camera");
+  c.el0 = quantize_vec(cam.U + cam.W * cam.half, fe, "camera");
+  c.et0 = quantize_vec(cam.W * (0.5 * cam.height * s) - cam.V, fe, "camera");
+  c.sw = quantize_vec(cam.W * s, fe, "camera");
+  c.w = quantize_vec(cam.W, fe, "camera");
+  // Every pixel direction and edge vector must fit Q(4.F): check the image corners.
+  const auto at = [](const IVec3& o, const IVec3& a, i64 ka, const IVec3& b2, i64 kb) {
+    return IVec3{o.x + a.x * ka + b2.x * kb, o.y + a.y * ka + b2.y * kb, o.z + a.z * ka + b2.z * kb};
+  };
+  for (i64 i : {i64{0}, i64{cam.width - 1}})
+    for (i64 j : {i64{0}, i64{cam.height - 1}})
+      check_dir(at(c.v0, c.dx, i, c.dy, j), fv, HwParams::kDirInt, sc.source);
+  const IVec3 zero{};
+  check_dir(at(c.el0, c.sw, -cam.width, zero, 0), fe, HwParams::kEdgeInt, sc.source);
+  check_dir(at(c.et0, c.sw, -cam.height, zero, 0), fe, HwParams::kEdgeInt, sc.source);
+  check_dir(c.el0, fe, HwParams::kEdgeInt, sc.source);
+  check_dir(c.et0, fe, HwParams::kEdgeInt, sc.source);
+
+  const auto where = [&](const scene::CompiledSegment& cs) {
+    const auto& prim = sc.primitives.at(static_cast<size_t>(cs.primitive));
+    return fmt::format("{}: {}[{}].points[{}]", sc.source,
+                       prim.kind == scene::Primitive::Kind::kCurve ? "curves" : "textures",
+                       prim.index, cs.index);
+  };
+  for (const auto& cs : sc.curve_segments)
+    m.curve_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
+  for (const auto& cs : sc.texture_segments)
+    m.texture_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
+  return m;
+}
+
+}  // namespace rpu::ref

@@ -1,0 +1,52 @@
+#include "model/hw_params.h"
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+
+namespace rpu::ref {
+namespace {
+
+void check_range(const char* flag, int v, int lo, int hi) {
+  if (v < lo || v > hi)
+    throw Error(flag, fmt::format("must be in [{}, {}], got {}", lo, hi, v));
+}
+
+}  // namespace
+
+void HwParams::validate() const {
+  check_range("--n1", n1, 1, 8);
+  check_range("--n", n, 1, 40);
+  if (n % n1 != 0)
+    throw Error("--n", fmt::format("n = {} is not a multiple of n1 = {} (K = n/n1 steps)", n, n1));
+  check_range("--coord-w", coord_w, 12, 40);
+  check_range("--dir-frac", dir_frac, 8, 40);
+  check_range("--t-frac", t_frac, 8, 48);
+  check_range("--unit-frac", unit_frac, 8, 40);
+  check_range("--edge-frac", edge_frac, 8, 40);
+  check_range("--inv-w", inv_w, 8, 40);
+  if (sqrt_w != 0) check_range("--sqrt-w", sqrt_w, 16, 126);
+  // The widest intermediate products must fit 126 bits (the model's __int128 and a sane RTL).
+  const int alpha_product = 2 * diff_w() + 3 + inv_w + 1;  // ((A - p1)·d)·m
+  if (alpha_product > 126)
+    throw Error("--coord-w", fmt::format("coord_w = {} with inv_w = {} needs a {}-bit product "
+                                         "(limit 126)", coord_w, inv_w, alpha_product));
+  const int edge_product = (coord_w + 5) + (edge_w() + 15) + 2;  // q·E(i)
+  if (edge_product > 126)
+    throw Error("--edge-frac", fmt::format("edge_frac = {} with coord_w = {} needs a {}-bit "
+                                           "product (limit 126)", edge_frac, coord_w, edge_product));
+  if (t_frac + coord_w + 4 > 120)
+    throw Error("--t-frac", "t_frac + coord_w too large for the chord-point product");
+}
+
+std::string HwParams::describe() const {
+  return fmt::format(
+      "n          = {}\nn1         = {}\nK          = {}\ncandidates = {} per step ({} new after "
+      "the first)\ncoord_w    = {}\ndir_frac   = {}\nt_frac     = {}\nunit_frac  = {}\n"
+      "edge_frac  = {}\ninv_w      = {}\nsqrt_w     = {}\nmetric     = {}\n",
+      n, n1, K(), J() + 1, J() - 1, coord_w, dir_frac, t_frac, unit_frac, edge_frac, inv_w,
+      sqrt_w == 0 ? std::string("exact (no pre-shift)") : std::to_string(sqrt_w),
+      metric == Metric::kAbs ? "abs" : "squared");
+}
+
+}  // namespace rpu::ref

@@ -1,0 +1,48 @@
+// Hardware parameters of the ray-processing unit, shared by the model, the RTL and the CLI.
+// Every derived width of the datapath follows from these (docs/fixed-point.md).
+#pragma once
+
+#include <string>
+
+namespace rpu::ref {
+
+enum class Metric { kAbs, kSquared };  // md = |pr - s| (seed) or |pr - s|² (no square root)
+
+struct HwParams {
+  int n = 16;            // result bits of the iterative process τ
+  int n1 = 2;            // bits per step; 2^n1 + 1 candidates; K = n / n1
+  int coord_w = 24;      // CW: signed width of positions (scene normalised into it), LSB = 1 unit
+  int dir_frac = 24;     // FV: fraction bits of the ray direction v̂ (|v̂| ≈ 1)
+  int t_frac = 30;       // FT: fraction bits of the chord parameter t and of w = t(1-t)
+  int unit_frac = 20;    // FU: fraction bits of the guide unit vectors u_k
+  int edge_frac = 24;    // FE: fraction bits of the PVP edge vectors and the camera axis W
+  int inv_w = 24;        // IW: mantissa bits of 1/L² (normalised, block floating point)
+  int sqrt_w = 0;        // widest radicand a square-root unit takes (0 = as wide as needed);
+                         // wider operands are pre-shifted right by an even amount
+  Metric metric = Metric::kAbs;
+
+  int K() const { return n / n1; }
+  int J() const { return 1 << n1; }
+
+  // Derived widths (docs/fixed-point.md).
+  static constexpr int kDirInt = 4;   // integer bits (incl. sign) of the unnormalised direction v
+  static constexpr int kEdgeInt = 4;  // integer bits (incl. sign) of edge vectors
+  static constexpr int kFlatRatio = 16;  // guides with h > 16·L use the series form
+  // Guard bits of the ray generator's linear terms (v0 + i·dx + j·dy, el0 - i·σW, ...): image
+  // sides are < 2^14, so i·(rounding of dx) stays below one LSB of the output format.
+  static constexpr int kRayGuard = 14;
+  int dir_w() const { return 2 + dir_frac; }             // v̂: Q(2.FV)
+  int t_w() const { return 3 + t_frac; }                  // t: Q(3.FT)
+  int unit_w() const { return 2 + unit_frac; }            // u: Q(2.FU)
+  int edge_w() const { return kEdgeInt + edge_frac + kRayGuard; }  // E: Q(4.FE+14)
+  int diff_w() const { return coord_w + 1; }              // d, q, A - p1, ...
+  int guide_radicand_w() const { return 2 * coord_w + 10; }  // h² + L²w with h ≤ 16 L
+  int dist_radicand_w() const { return 2 * coord_w + 8; }    // |pr - X|²
+  int sphere_radicand_w() const { return 2 * coord_w + 5; }  // R² - |q|² + tc²
+
+  // Throws rpu::Error naming the flag when a value or combination is invalid.
+  void validate() const;
+  std::string describe() const;  // one "name = value" line each, for `rpu config`
+};
+
+}  // namespace rpu::ref

@@ -1,0 +1,29 @@
+// `--backend ref`: the bit-accurate model renders a frame, all cores. The work items (pixel,
+// segment) are those the host would stream into the hardware: curve segments from the screen
+// bins, texture segments from the classification grid at the ray/plane unit's point p0.
+#pragma once
+
+#include <cstdint>
+
+#include "image/frame.h"
+#include "model/descriptors.h"
+#include "scene/compiled_scene.h"
+
+namespace rpu::ref {
+
+struct RefStats {
+  std::uint64_t curve_pairs = 0;    // curve work items
+  std::uint64_t texture_pairs = 0;  // texture work items
+  std::uint64_t overflow_pairs = 0; // work items in which some value saturated
+};
+
+struct RefOptions {
+  int threads = 0;       // 0 = all hardware threads
+  bool binning = true;   // screen bins for curve work items (never changes the image)
+  bool grid = true;      // classification grid for texture work items (never changes the image)
+};
+
+image::Frame render_ref(const scene::CompiledScene& scene, const ModelScene& model,
+                        const RefOptions& options, RefStats* stats = nullptr);
+
+}  // namespace rpu::ref
