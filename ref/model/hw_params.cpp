@@ -35,8 +35,10 @@ void HwParams::validate() const {
   if (edge_product > 126)
     throw Error("--edge-frac", fmt::format("edge_frac = {} with coord_w = {} needs a {}-bit "
                                            "product (limit 126)", edge_frac, coord_w, edge_product));
-  if (t_frac + coord_w + 4 > 120)
-    throw Error("--t-frac", "t_frac + coord_w too large for the chord-point product");
+  const int weight_product = 2 * coord_w + 3 + t_frac;  // L²·w in the guide unit
+  if (weight_product > 126)
+    throw Error("--t-frac", fmt::format("t_frac = {} with coord_w = {} needs a {}-bit product "
+                                        "L²·w (limit 126)", t_frac, coord_w, weight_product));
 }
 
 std::string HwParams::describe() const {

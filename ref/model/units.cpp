@@ -222,7 +222,9 @@ TextureOut texture_unit(const HwParams& p, const SegmentDesc& s, const WVec3& p0
   // pr2: round caps at the end points (eq 10).
   o.pr2 = dot(r1, r1) <= s.w0_2 || dot(r2, r2) <= s.w0_2;
   // pr3: the curve point on the guide line through p0 within w_0 (eqs 15–24).
-  o.t = chord_parameter(p, s, f1, ovf);
+  // t̂ = (p0 - p1)·d / L²; where pr1 fails the value is never used, so f1 is clamped to
+  // [0, L²] first (a mux in hardware) and t̂ stays in [0, 1] without saturating.
+  o.t = chord_parameter(p, s, std::clamp<i128>(f1, 0, s.L2), ovf);
   const i128 w = guide_weight(p, o.t);
   o.X = curve_point_unit(p, s, o.t, guide_unit(p, s.guide[0], s.L2, w, ovf),
                          guide_unit(p, s.guide[1], s.L2, w, ovf));
