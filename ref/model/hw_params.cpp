@@ -7,25 +7,25 @@
 namespace rpu::ref {
 namespace {
 
-void check_range(const char* flag, int v, int lo, int hi) {
+void check_range(const char* flag, const char* what, int v, int lo, int hi) {
   if (v < lo || v > hi)
-    throw Error(flag, fmt::format("must be in [{}, {}], got {}", lo, hi, v));
+    throw Error(flag, fmt::format("{} must be in [{}, {}], got {}", what, lo, hi, v));
 }
 
 }  // namespace
 
 void HwParams::validate() const {
-  check_range("--n1", n1, 1, 8);
-  check_range("--n", n, 1, 40);
+  check_range("--n1", "bits per step", n1, 1, 8);
+  check_range("--n", "result bits", n, 1, 40);
   if (n % n1 != 0)
     throw Error("--n", fmt::format("n = {} is not a multiple of n1 = {} (K = n/n1 steps)", n, n1));
-  check_range("--coord-w", coord_w, 12, 40);
-  check_range("--dir-frac", dir_frac, 8, 40);
-  check_range("--t-frac", t_frac, 8, 48);
-  check_range("--unit-frac", unit_frac, 8, 40);
-  check_range("--edge-frac", edge_frac, 8, 40);
-  check_range("--inv-w", inv_w, 8, 40);
-  if (sqrt_w != 0) check_range("--sqrt-w", sqrt_w, 16, 126);
+  check_range("--coord-w", "coordinate width", coord_w, 12, 40);
+  check_range("--dir-frac", "direction fraction bits", dir_frac, 8, 40);
+  check_range("--t-frac", "chord-parameter fraction bits", t_frac, 8, 48);
+  check_range("--unit-frac", "guide-direction fraction bits", unit_frac, 8, 40);
+  check_range("--edge-frac", "edge-vector fraction bits", edge_frac, 8, 40);
+  check_range("--inv-w", "1/L² mantissa width", inv_w, 8, 40);
+  if (sqrt_w != 0) check_range("--sqrt-w", "square-root radicand width", sqrt_w, 16, 126);
   // The widest intermediate products must fit 126 bits (the model's __int128 and a sane RTL).
   const int alpha_product = 2 * diff_w() + 3 + inv_w + 1;  // ((A - p1)·d)·m
   if (alpha_product > 126)

@@ -13,10 +13,10 @@ struct HwParams {
   int n1 = 2;            // bits per step; 2^n1 + 1 candidates; K = n / n1
   int coord_w = 24;      // CW: signed width of positions (scene normalised into it), LSB = 1 unit
   int dir_frac = 24;     // FV: fraction bits of the ray direction v̂ (|v̂| ≈ 1)
-  int t_frac = 30;       // FT: fraction bits of the chord parameter t and of w = t(1-t)
-  int unit_frac = 20;    // FU: fraction bits of the guide unit vectors u_k
-  int edge_frac = 24;    // FE: fraction bits of the PVP edge vectors and the camera axis W
-  int inv_w = 24;        // IW: mantissa bits of 1/L² (normalised, block floating point)
+  int t_frac = 24;       // FT: fraction bits of the chord parameter t and of w = t(1-t)
+  int unit_frac = 16;    // FU: fraction bits of the guide unit vectors u_k
+  int edge_frac = 16;    // FE: fraction bits of the PVP edge vectors and the camera axis W
+  int inv_w = 18;        // IW: mantissa bits of 1/L² (normalised, block floating point)
   int sqrt_w = 0;        // widest radicand a square-root unit takes (0 = as wide as needed);
                          // wider operands are pre-shifted right by an even amount
   Metric metric = Metric::kAbs;
