@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Sets up everything (system packages), builds, and runs the default test suite under CTest.
+# Sets up everything (system packages), builds, and runs the default test suite under CTest,
+# then the unit and CLI tests again under ASan/UBSan (scripts/test_sanitize.sh, build-asan/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+./scripts/test_sanitize.sh
