@@ -558,3 +558,29 @@ TEST(FixedBitLength, AllSixteenBitAndPowersOfTwo) {
 
 }  // namespace
 }  // namespace rpu::fixed
+
+namespace rpu::fixed {
+namespace {
+
+// The fast floor root used by the model and the hardware's digit-by-digit recurrence agree
+// everywhere: exhaustively to 2^20 and on seeded random values of every width to 126 bits.
+TEST(FixedIsqrt, FastPathEqualsDigitByDigit) {
+  for (u64 x = 0; x < (u64{1} << 20); ++x) ASSERT_EQ(isqrt(x, 20), isqrt_digits(x, 20)) << x;
+  std::mt19937_64 rng(20261121);
+  for (int trial = 0; trial < 300000; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 126);
+    const u128 x = ((static_cast<u128>(rng()) << 64) | rng()) & max_unsigned(w);
+    ASSERT_EQ(isqrt(x, w), isqrt_digits(x, w)) << "width " << w;
+    // Near perfect squares, where a first guess is most likely to be off by one.
+    const u128 r = isqrt_digits(x, w);
+    for (int dx = -2; dx <= 2; ++dx) {
+      const u128 y = r * r + static_cast<u128>(static_cast<i128>(dx));
+      if (dx < 0 && r == 0) continue;
+      if (!fits_unsigned(y, w)) continue;
+      ASSERT_EQ(isqrt(y, w), isqrt_digits(y, w)) << "width " << w;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rpu::fixed

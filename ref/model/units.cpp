@@ -1,6 +1,7 @@
 #include "model/units.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace rpu::ref {
 
@@ -153,29 +154,35 @@ IpState ip_start(const HwParams& p, const SegmentDesc& s, const SearchInterval& 
   return st;
 }
 
-IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
-                const IpState& state, Overflow& ovf, IpStepTrace* trace) {
+void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                      IpState& st, Overflow& ovf, IpStepTrace* trace) {
   const int J = p.J();
-  const int k = state.k + 1;
+  const int k = st.k + 1;
   const int shift = p.n - p.n1 * k;  // δ_k = 2^-(n1·k) = 2^shift τ-index units
-  std::array<Candidate, 257> cand;
-  cand[0] = state.lo;
-  cand[J] = state.hi;
+  // The J - 1 new candidates (j = 1..J-1); the ends are the previous interval's lo and hi.
+  thread_local std::vector<Candidate> cand;
+  if (cand.size() < static_cast<size_t>(J) + 1) cand.resize(static_cast<size_t>(J) + 1);
   for (int j = 1; j < J; ++j)
-    cand[j] = candidate_evaluator(p, s, si, state.tau + (static_cast<std::uint64_t>(j) << shift), ovf);
-  std::array<i128, 256> sd;
-  for (int j = 0; j < J; ++j) sd[j] = cand[j].md + cand[j + 1].md;
+    cand[j] = candidate_evaluator(p, s, si, st.tau + (static_cast<std::uint64_t>(j) << shift), ovf);
+  const auto md = [&](int j) { return j == 0 ? st.lo.md : j == J ? st.hi.md : cand[j].md; };
+  std::array<i128, 256> sd;  // uninitialised: only [0, J) is written and read
+  for (int j = 0; j < J; ++j) sd[j] = md(j) + md(j + 1);
   const int eta = argmin_lowest(sd.data(), J);
   if (trace) {
-    for (int j = 0; j <= J; ++j) trace->md[j] = cand[j].md;
+    for (int j = 0; j <= J; ++j) trace->md[j] = md(j);
     for (int j = 0; j < J; ++j) trace->sd[j] = sd[j];
     trace->eta = eta;
   }
-  IpState next;
-  next.k = k;
-  next.tau = state.tau + (static_cast<std::uint64_t>(eta) << shift);
-  next.lo = cand[eta];
-  next.hi = cand[eta + 1];
+  st.k = k;
+  st.tau += static_cast<std::uint64_t>(eta) << shift;
+  if (eta + 1 < J) st.hi = cand[eta + 1];  // else hi stays the previous hi
+  if (eta > 0) st.lo = cand[eta];          // else lo stays the previous lo
+}
+
+IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                const IpState& state, Overflow& ovf, IpStepTrace* trace) {
+  IpState next = state;
+  ip_step_in_place(p, s, si, next, ovf, trace);
   return next;
 }
 
@@ -241,7 +248,7 @@ PairResult process_curve_pair(const HwParams& p, const CameraDesc& cam, const Ra
   r.interval = sphere_unit(p, cam.eye, ray.vhat, s, ovf);
   if (r.interval.pred1) {
     IpState st = ip_start(p, s, r.interval, ovf);
-    for (int k = 0; k < p.K(); ++k) st = ip_step(p, s, r.interval, st, ovf);
+    for (int k = 0; k < p.K(); ++k) ip_step_in_place(p, s, r.interval, st, ovf, nullptr);
     r.tau = st.tau;
     r.t = st.lo.t;
     r.X = st.lo.X;

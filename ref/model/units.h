@@ -85,6 +85,9 @@ IpState ip_start(const HwParams& p, const SegmentDesc& s, const SearchInterval& 
 // Step k = state.k + 1: J - 1 new candidates, pair sums, lowest-index argmin.
 IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
                 const IpState& state, Overflow& ovf, IpStepTrace* trace = nullptr);
+// The same step updating `state` in place (the model's hot loop).
+void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                      IpState& state, Overflow& ovf, IpStepTrace* trace = nullptr);
 // Lowest-index argmin of the pair sums (rtl/rpu_argmin): strict < keeps the first minimum.
 int argmin_lowest(const i128* sd, int count);
 
