@@ -21,6 +21,7 @@ using namespace rpu;
 struct CommonFlags {
   ref::HwParams hw;
   std::string metric = "abs";
+  std::string ip_mode = "unrolled";
   int threads = 0;
   bool no_binning = false;
   bool no_grid = false;
@@ -45,6 +46,8 @@ struct CommonFlags {
         ->capture_default_str();
     app.add_option("--metric", metric, "distance metric: abs (|d|, the seed's) or squared")
         ->capture_default_str();
+    app.add_option("--ip", ip_mode, "K-step process: unrolled (one pair per cycle) or iterative")
+        ->capture_default_str();
     app.add_option("--threads", threads, "worker threads (0 = all cores)")->capture_default_str();
     app.add_flag("--no-binning", no_binning, "test every curve segment on every pixel");
     app.add_flag("--no-grid", no_grid, "test every texture segment on every pixel");
@@ -54,6 +57,9 @@ struct CommonFlags {
     if (metric == "abs") p.metric = ref::Metric::kAbs;
     else if (metric == "squared") p.metric = ref::Metric::kSquared;
     else throw Error("--metric", "must be abs or squared, got '" + metric + "'");
+    if (ip_mode == "unrolled") p.unrolled = true;
+    else if (ip_mode == "iterative") p.unrolled = false;
+    else throw Error("--ip", "must be unrolled or iterative, got '" + ip_mode + "'");
     p.validate();
     return p;
   }

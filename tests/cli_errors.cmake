@@ -58,8 +58,28 @@ expect_error("unknown image format" "x.nosuchformat;image format"
 expect_error("unwritable output" "no_dir/x.png;does not exist"
              render builtin:ellipse6 -o ${OUT}/no_dir/x.png)
 expect_error("usage: missing output" "-o" render builtin:ellipse6)
+expect_error("bad metric" "--metric;abs or squared" render builtin:ellipse6 --backend ref --metric cube -o ${OUT}/x.png)
+expect_error("bad ip mode" "--ip;unrolled or iterative" config --ip sideways)
+expect_error("coord_w too small for the scene" "builtin:airfield: textures;coord_w = 12 is too small"
+             render builtin:airfield --backend ref --coord-w 12 -o ${OUT}/x.png)
+expect_error("product too wide" "--t-frac;limit 126" config --coord-w 40 --t-frac 48)
+
+# And the good paths: every backend renders, `config` prints the parameter set.
+foreach(backend float float-ip ref)
+  execute_process(COMMAND ${RPU} render builtin:polyline9 --backend ${backend} -q -o ${OUT}/ok_${backend}.png
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/ok_${backend}.png)
+    message(STATUS "FAIL render --backend ${backend}: exit ${rc}: ${err}")
+    math(EXPR failures "${failures} + 1")
+  endif()
+endforeach()
+execute_process(COMMAND ${RPU} config --n 12 --n1 3 --ip iterative RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "K          = 4" OR NOT out MATCHES "iterative")
+  message(STATUS "FAIL config: exit ${rc}: ${out}")
+  math(EXPR failures "${failures} + 1")
+endif()
 
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} CLI error case(s) failed")
 endif()
-message(STATUS "${count} bad scene files and 8 bad command lines rejected cleanly")
+message(STATUS "${count} bad scene files and 12 bad command lines rejected cleanly; every backend renders")

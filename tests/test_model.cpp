@@ -423,6 +423,33 @@ TEST(RefModel, InvariantToScaleOfTheScene) {
                                           render_ref(b, quantize_scene(b, p), {})), 0u);
 }
 
+TEST(RefModel, UnrolledAndIterativeProcessesAreEqual) {
+  const scene::CompiledScene sc = demo("curve12");
+  for (int n1 : {1, 2, 4}) {
+    HwParams p;
+    p.n1 = n1;
+    const ModelScene m = quantize_scene(sc, p);
+    int pairs = 0;
+    for (int j = 0; j < m.camera.height; j += 2)
+      for (int i = 0; i < m.camera.width; i += 2) {
+        const RayGenOut ray = ray_generator(p, m.camera, i, j);
+        for (const SegmentDesc& s : m.curve_segments) {
+          Overflow o1, o2;
+          const SearchInterval si = sphere_unit(p, m.camera.eye, ray.vhat, s, o1);
+          if (!si.pred1) continue;
+          const IpState a = ip_process_unrolled(p, s, si, o1);
+          const IpState b = ip_process_iterative(p, s, si, o2);
+          ASSERT_EQ(a.tau, b.tau);
+          ASSERT_EQ(a.lo.X, b.lo.X);
+          ASSERT_EQ(a.lo.t, b.lo.t);
+          ASSERT_EQ(a.k, p.K());
+          ++pairs;
+        }
+      }
+    EXPECT_GT(pairs, 1000) << "n1 " << n1;
+  }
+}
+
 TEST(RefModel, IpStepTraceMatchesItsResult) {
   // The lowest index wins ties in the argmin tree.
   const i128 sd[5] = {7, 3, 3, 9, 3};

@@ -20,6 +20,8 @@ struct HwParams {
   int sqrt_w = 0;        // widest radicand a square-root unit takes (0 = as wide as needed);
                          // wider operands are pre-shifted right by an even amount
   Metric metric = Metric::kAbs;
+  bool unrolled = true;  // K step units in a pipeline (one pair per cycle), or one step unit
+                         // reused K times (iterative); the results are identical
 
   int K() const { return n / n1; }
   int J() const { return 1 << n1; }

@@ -186,6 +186,25 @@ IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& s
   return next;
 }
 
+IpState ip_process_unrolled(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                            Overflow& ovf) {
+  // Stage 0 evaluates the two ends; stages 1..K each own one step (state.k enters as k - 1).
+  IpState st = ip_start(p, s, si, ovf);
+  for (int stage = 1; stage <= p.K(); ++stage) {
+    st.k = stage - 1;
+    ip_step_in_place(p, s, si, st, ovf, nullptr);
+  }
+  return st;
+}
+
+IpState ip_process_iterative(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                             Overflow& ovf) {
+  // One step unit; its counter (state.k) advances each pass until K passes are done.
+  IpState st = ip_start(p, s, si, ovf);
+  while (st.k < p.K()) ip_step_in_place(p, s, si, st, ovf, nullptr);
+  return st;
+}
+
 CaptureOut capture_unit(const HwParams& p, const CameraDesc& cam, const RayGenOut& ray,
                         const WVec3& X, i128 t) {
   CaptureOut c;
@@ -247,8 +266,7 @@ PairResult process_curve_pair(const HwParams& p, const CameraDesc& cam, const Ra
   Overflow ovf;
   r.interval = sphere_unit(p, cam.eye, ray.vhat, s, ovf);
   if (r.interval.pred1) {
-    IpState st = ip_start(p, s, r.interval, ovf);
-    for (int k = 0; k < p.K(); ++k) ip_step_in_place(p, s, r.interval, st, ovf, nullptr);
+    const IpState st = ip_process(p, s, r.interval, ovf);
     r.tau = st.tau;
     r.t = st.lo.t;
     r.X = st.lo.X;

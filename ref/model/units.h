@@ -91,6 +91,18 @@ void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInter
 // Lowest-index argmin of the pair sums (rtl/rpu_argmin): strict < keeps the first minimum.
 int argmin_lowest(const i128* sd, int count);
 
+// The K-step process in both hardware forms: unrolled (stage k is its own unit with its shift
+// n - n1·k wired in) or iterative (one step unit, a step counter selects the shift). They are
+// the same arithmetic; `ip_process` picks by p.unrolled, and tests prove the forms equal.
+IpState ip_process_unrolled(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                            Overflow& ovf);
+IpState ip_process_iterative(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                             Overflow& ovf);
+inline IpState ip_process(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                          Overflow& ovf) {
+  return p.unrolled ? ip_process_unrolled(p, s, si, ovf) : ip_process_iterative(p, s, si, ovf);
+}
+
 // ---- capture unit: the PVP plane-sign test (rtl/rpu_capture) ----
 struct CaptureOut {
   bool hit = false;
