@@ -1,0 +1,102 @@
+// Shared pieces of the Verilator testbenches: seeds, wide-signal packing, clocking, and the
+// checker's report format (ibex-style: FAILURE with the cycle and the item, or "matched N").
+#pragma once
+
+#include <verilated.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include "fixed/fixed.h"
+
+namespace rpu::sim {
+
+using fixed::i128;
+using fixed::u128;
+
+// The seed: RPU_SEED from the environment, else a fixed default; always printed.
+inline std::uint64_t test_seed(const char* name, std::uint64_t fallback = 20261121) {
+  const char* env = std::getenv("RPU_SEED");
+  const std::uint64_t seed = env ? std::strtoull(env, nullptr, 0) : fallback;
+  std::printf("%s: seed %llu (set RPU_SEED to reproduce another)\n", name,
+              static_cast<unsigned long long>(seed));
+  return seed;
+}
+
+// Vector count: RPU_VECTORS from the environment scales the default (opt-in long runs).
+inline long vector_count(long fallback) {
+  const char* env = std::getenv("RPU_VECTORS");
+  return env ? std::strtol(env, nullptr, 0) : fallback;
+}
+
+inline std::string to_string(i128 v) {
+  if (v == 0) return "0";
+  const bool neg = v < 0;
+  u128 u = neg ? static_cast<u128>(-(v + 1)) + 1 : static_cast<u128>(v);
+  std::string s;
+  while (u) {
+    s.insert(s.begin(), static_cast<char>('0' + static_cast<int>(u % 10)));
+    u /= 10;
+  }
+  return neg ? "-" + s : s;
+}
+
+// Writing a `width`-bit two's-complement value into a Verilator port of any size.
+inline void put(CData& port, i128 v, int) { port = static_cast<CData>(v); }
+inline void put(SData& port, i128 v, int) { port = static_cast<SData>(v); }
+inline void put(IData& port, i128 v, int) { port = static_cast<IData>(v); }
+inline void put(QData& port, i128 v, int) { port = static_cast<QData>(v); }
+template <std::size_t N>
+void put(VlWide<N>& port, i128 v, int width) {
+  const u128 u = static_cast<u128>(v);
+  for (std::size_t k = 0; k < N; ++k) {
+    const int lo = static_cast<int>(32 * k);
+    std::uint32_t word = 0;
+    if (lo < 128) word = static_cast<std::uint32_t>(u >> lo);
+    else word = v < 0 ? 0xFFFFFFFFu : 0u;
+    if (lo + 32 > width) word &= width > lo ? (0xFFFFFFFFu >> (lo + 32 - width)) : 0u;
+    port[k] = word;
+  }
+}
+
+// Reading a port as an unsigned or a sign-extended `width`-bit value.
+template <class T>
+u128 get_unsigned(const T& port, int width) {
+  const u128 u = static_cast<u128>(port);
+  return width >= 128 ? u : (u & ((u128{1} << width) - 1));
+}
+template <std::size_t N>
+u128 get_unsigned(const VlWide<N>& port, int width) {
+  u128 u = 0;
+  for (std::size_t k = 0; k < N && 32 * k < 128; ++k) u |= static_cast<u128>(port[k]) << (32 * k);
+  return width >= 128 ? u : (u & ((u128{1} << width) - 1));
+}
+template <class T>
+i128 get_signed(const T& port, int width) {
+  const u128 u = get_unsigned(port, width);
+  const u128 sign = u128{1} << (width - 1);
+  return static_cast<i128>((u ^ sign) - sign);
+}
+
+// One clock cycle: inputs set before the rising edge, outputs read after it.
+template <class Top>
+void tick(Top& top, VerilatedContext& ctx) {
+  top.clk_i = 0;
+  top.eval();
+  ctx.timeInc(1);
+  top.clk_i = 1;
+  top.eval();
+  ctx.timeInc(1);
+}
+
+template <class Top>
+void reset(Top& top, VerilatedContext& ctx, int cycles = 4) {
+  top.rst_ni = 0;
+  for (int k = 0; k < cycles; ++k) tick(top, ctx);
+  top.rst_ni = 1;
+}
+
+}  // namespace rpu::sim
