@@ -81,6 +81,47 @@ i128 get_signed(const T& port, int width) {
   return static_cast<i128>((u ^ sign) - sign);
 }
 
+// A 3-component vector packed {z, y, x}, each component `width` bits, into a wide port.
+template <std::size_t N>
+void put_vec3(VlWide<N>& port, i128 x, i128 y, i128 z, int width) {
+  for (std::size_t k = 0; k < N; ++k) port[k] = 0;
+  const i128 comps[3] = {x, y, z};
+  for (int c = 0; c < 3; ++c) {
+    const u128 u = static_cast<u128>(comps[c]);
+    for (int b = 0; b < width; ++b) {
+      const bool bit = b < 128 ? ((u >> b) & 1) != 0 : comps[c] < 0;
+      if (bit) port[static_cast<std::size_t>((c * width + b) / 32)] |= 1u << ((c * width + b) % 32);
+    }
+  }
+}
+inline void put_vec3(QData& port, i128 x, i128 y, i128 z, int width) {
+  const u128 m = (u128{1} << width) - 1;
+  port = static_cast<QData>((static_cast<u128>(x) & m) | ((static_cast<u128>(y) & m) << width) |
+                            ((static_cast<u128>(z) & m) << (2 * width)));
+}
+inline void put_vec3(IData& port, i128 x, i128 y, i128 z, int width) {
+  QData q = 0;
+  put_vec3(q, x, y, z, width);
+  port = static_cast<IData>(q);
+}
+// Component c (0 = x) of a {z, y, x}-packed port, sign-extended.
+template <std::size_t N>
+i128 get_comp(const VlWide<N>& port, int c, int width) {
+  u128 u = 0;
+  for (int b = 0; b < width; ++b) {
+    const int bit = c * width + b;
+    if ((port[static_cast<std::size_t>(bit / 32)] >> (bit % 32)) & 1) u |= u128{1} << b;
+  }
+  const u128 sign = u128{1} << (width - 1);
+  return static_cast<i128>((u ^ sign) - sign);
+}
+template <class T>
+i128 get_comp(const T& port, int c, int width) {
+  const u128 u = (static_cast<u128>(port) >> (c * width)) & ((u128{1} << width) - 1);
+  const u128 sign = u128{1} << (width - 1);
+  return static_cast<i128>((u ^ sign) - sign);
+}
+
 // One clock cycle: inputs set before the rising edge, outputs read after it.
 template <class Top>
 void tick(Top& top, VerilatedContext& ctx) {
