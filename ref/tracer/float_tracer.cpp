@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "common/parallel.h"
 #include "scene/screen_bins.h"
 
 namespace rpu::tracer {
@@ -222,43 +223,44 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
   const CameraFrame& cam = sc.camera;
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(cam, sc.curve_segments, 8, o.binning);
-  std::atomic<int> next_row{0};
   std::atomic<std::uint64_t> tested{0}, hits{0}, texture_tested{0};
-  const auto worker = [&] {
-    std::uint64_t local_tested = 0, local_hits = 0, local_texture = 0;
-    for (int j; (j = next_row.fetch_add(1)) < cam.height;) {
+  struct Row {
+    const CompiledScene* sc;
+    const FloatOptions* o;
+    const scene::ScreenBins* bins;
+    image::Frame* frame;
+    std::uint64_t tested = 0, hits = 0, texture = 0;
+    void operator()(int j) {
+      const CameraFrame& cam = sc->camera;
       for (int i = 0; i < cam.width; ++i) {
         Hit hit;
-        for (auto k : bins.segments_for_pixel(i, j)) {
-          const CompiledSegment& cs = sc.curve_segments[k];
-          ++local_tested;
+        for (auto k : bins->segments_for_pixel(i, j)) {
+          const CompiledSegment& cs = sc->curve_segments[k];
+          ++tested;
           PairResult r;
-          if (o.method == Method::kIterative) {
-            r = iterative_pair(cam, cs.geom, i, j, o.n, o.n1);
+          if (o->method == Method::kIterative) {
+            r = iterative_pair(cam, cs.geom, i, j, o->n, o->n1);
           } else if (pvp_may_meet_sphere(cam, cs.geom, i, j)) {
             r = ideal_pair(cam, cs.geom, i, j);
           }
           if (r.hit) {
-            ++local_hits;
+            ++hits;
             hit.offer(r.depth, cs.primitive);
           }
         }
-        shade_textures(sc, o, i, j, hit, local_texture);
-        const size_t idx = frame.index(i, j);
-        frame.primitive[idx] = hit.primitive;
-        frame.depth[idx] = hit.primitive == image::kBackground ? 0.0 : hit.depth;
+        shade_textures(*sc, *o, i, j, hit, texture);
+        const size_t idx = frame->index(i, j);
+        frame->primitive[idx] = hit.primitive;
+        frame->depth[idx] = hit.primitive == image::kBackground ? 0.0 : hit.depth;
       }
     }
-    tested += local_tested;
-    hits += local_hits;
-    texture_tested += local_texture;
   };
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned n_threads = o.threads > 0 ? static_cast<unsigned>(o.threads) : hw;
-  std::vector<std::jthread> pool;
-  for (unsigned t = 1; t < n_threads; ++t) pool.emplace_back(worker);
-  worker();
-  pool.clear();
+  parallel_rows(cam.height, o.threads, Row{&sc, &o, &bins, &frame},
+                [&](const Row& r) {
+                  tested += r.tested;
+                  hits += r.hits;
+                  texture_tested += r.texture;
+                });
   if (stats) {
     stats->pairs_tested = tested;
     stats->pairs_hit = hits;
