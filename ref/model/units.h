@@ -47,7 +47,8 @@ SearchInterval sphere_unit(const HwParams& p, const IVec3& eye, const IVec3& vha
                            const SegmentDesc& s, Overflow& ovf);
 
 // ---- chord parameter (part of rtl/rpu_sphere and rtl/rpu_texture) ----
-// t = ((x - p1)·d) · inv_m · 2^-(inv_s) in Q(3.FT), for x - p1 given as dot = (x - p1)·d (LSB²).
+// t = floor(dot · inv_m · 2^-(inv_s - FT)), saturated to Q(3.FT), for dot = (x - p1)·d (LSB²);
+// inv_s < FT (segments with L² < 2^(FT-IW+3)) makes it an exact left shift.
 i128 chord_parameter(const HwParams& p, const SegmentDesc& s, i128 dot, Overflow& ovf);
 
 // ---- guide unit: g_k(t) of the closed form (rtl/rpu_guide) ----

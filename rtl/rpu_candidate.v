@@ -1,0 +1,230 @@
+// rpu_candidate: the candidate evaluator of one IP step, twin of rpu::ref::candidate_evaluator.
+// For the candidate m (τ = m·2^-n):
+//   pr = A + floor(AB·m / 2^n)                        ray point
+//   t  = sat(α + floor(β·m / 2^n))                     chord parameter, Q(3.FT)
+//   g1, g2 = rpu_guide(t)                              both guides in parallel
+//   X  = rpu_curve_point(t, g1, g2)                    curve point s(t)
+//   md = isqrt(sat(|pr − X|²)) or sat(|pr − X|²)       by Metric
+// Fixed latency; the candidate's context rides in the sub-units' tags.
+`default_nettype none
+
+module rpu_candidate #(
+  parameter integer CoordW   = 24,  // position width (12..40)
+  parameter integer TFrac    = 24,  // fraction bits of t (8..48)
+  parameter integer UnitFrac = 16,  // fraction bits of u_k (8..40)
+  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
+  parameter integer N        = 16,  // result bits of τ (1..40)
+  parameter integer Metric   = 0,   // 0: md = |pr − X| (seed), 1: md = |pr − X|²
+  parameter integer TagW     = 1,   // side-band bits (>= 1)
+  // Derived (do not override).
+  parameter integer TW   = TFrac + 3,           // t, α, β: Q(3.FT)
+  parameter integer DW   = CoordW + 1,          // d, AB
+  parameter integer UW   = UnitFrac + 2,        // u: Q(2.FU)
+  parameter integer HW   = CoordW + 5,          // guide height h
+  parameter integer L2W  = 2 * CoordW + 3,      // L²
+  parameter integer XW   = CoordW + 3,          // X
+  parameter integer PrW  = CoordW + 2,          // pr
+  parameter integer Md2W = 2 * CoordW + 8,      // |pr − X|² format (dist_radicand_w)
+  parameter integer MdW  = Metric == 0 ? CoordW + 4 : Md2W
+) (
+  input  wire                clk_i,
+  input  wire                rst_ni,
+  input  wire                valid_i,
+  input  wire [N:0]          m_i,        // τ index, 0..2^N
+  input  wire [3*CoordW-1:0] a_i,        // A, {z, y, x}
+  input  wire [3*DW-1:0]     ab_i,       // B − A
+  input  wire [TW-1:0]       alpha_i,
+  input  wire [TW-1:0]       beta_i,
+  input  wire [3*CoordW-1:0] p1_i,
+  input  wire [3*DW-1:0]     d_i,
+  input  wire [L2W-1:0]      l2_i,
+  input  wire [1:0]          mode1_i,    // guide of end 1: 0 straight, 1 arc, 2 flat
+  input  wire [HW-1:0]       h1_i,
+  input  wire [CoordW-1:0]   a1_i,
+  input  wire [TFrac-1:0]    b1_i,
+  input  wire [3*UW-1:0]     u1_i,
+  input  wire [1:0]          mode2_i,    // guide of end 2
+  input  wire [HW-1:0]       h2_i,
+  input  wire [CoordW-1:0]   a2_i,
+  input  wire [TFrac-1:0]    b2_i,
+  input  wire [3*UW-1:0]     u2_i,
+  input  wire [TagW-1:0]     tag_i,
+  output wire                valid_o,
+  output wire [TW-1:0]       t_o,
+  output wire [3*XW-1:0]     x_o,
+  output wire [3*PrW-1:0]    pr_o,
+  output wire [MdW-1:0]      md_o,
+  output wire                ovf_o,      // some value of this candidate saturated
+  output wire [TagW-1:0]     tag_o
+);
+  localparam integer GW = CoordW + 2;  // rpu_guide's g
+
+  initial begin
+    if (Metric != 0 && Metric != 1) $fatal(1, "rpu_candidate: Metric must be 0 or 1");
+    if (N < 1 || N > 40) $fatal(1, "rpu_candidate: N must be in 1..40");
+  end
+
+  // ---- stage 1: pr(m) and t(m) ----
+  localparam integer MW = N + 2;  // m as a signed value
+  wire signed [MW-1:0] m_s = {1'b0, m_i};
+  reg                  valid_q1;
+  reg [3*PrW-1:0]      pr_q1;
+  reg [TW-1:0]         t_q1;
+  reg                  ovf_q1;
+  reg [TagW-1:0]       tag_q1;
+  genvar c;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_pr
+      wire signed [CoordW-1:0]  ac  = a_i[c*CoordW +: CoordW];
+      wire signed [DW-1:0]      abc = ab_i[c*DW +: DW];
+      wire signed [DW+MW-1:0]   prod = abc * m_s;
+      wire signed [DW+MW-1:0]   step = prod >>> N;  // floor
+      wire signed [PrW-1:0]     prc = {{(PrW-CoordW){ac[CoordW-1]}}, ac} + step[PrW-1:0];
+      always @(posedge clk_i) pr_q1[c*PrW +: PrW] <= prc;
+      wire unused_step = ^step[DW+MW-1:PrW];
+    end
+  endgenerate
+  wire signed [TW-1:0]    alpha = alpha_i;
+  wire signed [TW-1:0]    beta  = beta_i;
+  wire signed [TW+MW-1:0] bm    = beta * m_s;
+  wire signed [TW+MW-1:0] bstep = bm >>> N;
+  wire signed [TW+MW:0]   tsum  = {{(MW+1){alpha[TW-1]}}, alpha} + {bstep[TW+MW-1], bstep};
+  wire signed [TW+MW:0]   tmax  = {{(MW+1){1'b0}}, 1'b0, {(TW-1){1'b1}}};
+  wire signed [TW+MW:0]   tmin  = {{(MW+1){1'b1}}, 1'b1, {(TW-1){1'b0}}};
+  wire                    t_hi  = tsum > tmax;
+  wire                    t_lo  = tsum < tmin;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_q1 <= 1'b0;
+    else         valid_q1 <= valid_i;
+  end
+  always @(posedge clk_i) begin
+    t_q1   <= t_hi ? tmax[TW-1:0] : t_lo ? tmin[TW-1:0] : tsum[TW-1:0];
+    ovf_q1 <= t_hi | t_lo;
+    tag_q1 <= tag_i;
+  end
+
+  // ---- the two guides; the candidate's context (and the segment fields the curve point needs
+  //      later) ride in guide 1's tag ----
+  localparam integer SegW   = 3*CoordW + 3*DW + 6*UW;  // p1, d, u1, u2
+  localparam integer G1TagW = SegW + 3*PrW + TW + 1 + TagW;
+  reg [SegW-1:0] seg_q1;
+  reg [L2W-1:0]  l2_q1;
+  reg [1:0]      mode1_q1, mode2_q1;
+  reg [HW-1:0]   h1_q1, h2_q1;
+  reg [CoordW-1:0] a1_q1, a2_q1;
+  reg [TFrac-1:0]  b1_q1, b2_q1;
+  always @(posedge clk_i) begin
+    seg_q1   <= {p1_i, d_i, u1_i, u2_i};
+    l2_q1    <= l2_i;
+    mode1_q1 <= mode1_i;
+    h1_q1    <= h1_i;
+    a1_q1    <= a1_i;
+    b1_q1    <= b1_i;
+    mode2_q1 <= mode2_i;
+    h2_q1    <= h2_i;
+    a2_q1    <= a2_i;
+    b2_q1    <= b2_i;
+  end
+  wire [G1TagW-1:0] g1_tag_out;
+  wire              g1_valid, g2_valid, g1_ovf, g2_ovf;
+  wire [GW-1:0]     g1, g2;
+  wire [TFrac-2:0]  w1, w2;
+  wire              g2_tag_out;
+  rpu_guide #(.CoordW(CoordW), .TFrac(TFrac), .SqrtW(SqrtW), .TagW(G1TagW)) u_guide1 (
+    .clk_i, .rst_ni, .valid_i(valid_q1), .t_i(t_q1), .mode_i(mode1_q1), .h_i(h1_q1), .a_i(a1_q1),
+    .b_i(b1_q1), .l2_i(l2_q1), .tag_i({seg_q1, pr_q1, t_q1, ovf_q1, tag_q1}),
+    .valid_o(g1_valid), .g_o(g1), .w_o(w1), .ovf_o(g1_ovf), .tag_o(g1_tag_out));
+  rpu_guide #(.CoordW(CoordW), .TFrac(TFrac), .SqrtW(SqrtW), .TagW(1)) u_guide2 (
+    .clk_i, .rst_ni, .valid_i(valid_q1), .t_i(t_q1), .mode_i(mode2_q1), .h_i(h2_q1), .a_i(a2_q1),
+    .b_i(b2_q1), .l2_i(l2_q1), .tag_i(1'b0),
+    .valid_o(g2_valid), .g_o(g2), .w_o(w2), .ovf_o(g2_ovf), .tag_o(g2_tag_out));
+  wire [SegW-1:0]  seg_g = g1_tag_out[G1TagW-1 -: SegW];
+  wire [3*PrW-1:0] pr_g = g1_tag_out[G1TagW-SegW-1 -: 3*PrW];
+  wire [3*CoordW-1:0] p1_g = seg_g[SegW-1 -: 3*CoordW];
+  wire [3*DW-1:0]     d_g  = seg_g[SegW-3*CoordW-1 -: 3*DW];
+  wire [3*UW-1:0]     u1_g = seg_g[6*UW-1 -: 3*UW];
+  wire [3*UW-1:0]     u2_g = seg_g[3*UW-1:0];
+  wire [TW-1:0]    t_g  = g1_tag_out[TW+1+TagW-1 -: TW];
+  wire             ovf_g = g1_tag_out[TagW] | g1_ovf | g2_ovf;
+  wire [TagW-1:0]  tag_g = g1_tag_out[TagW-1:0];
+  wire unused_guide = ^{g2_valid, w1, w2, g2_tag_out};
+
+  // ---- curve point ----
+  localparam integer CpTagW = 3*PrW + TW + 1 + TagW;
+  wire              cp_valid;
+  wire [3*XW-1:0]   x_cp;
+  wire [CpTagW-1:0] cp_tag;
+  rpu_curve_point #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .TagW(CpTagW)) u_cp (
+    .clk_i, .rst_ni, .valid_i(g1_valid), .p1_i(p1_g), .d_i(d_g), .u1_i(u1_g), .u2_i(u2_g),
+    .t_i(t_g), .g1_i(g1), .g2_i(g2), .tag_i({pr_g, t_g, ovf_g, tag_g}),
+    .valid_o(cp_valid), .x_o(x_cp), .tag_o(cp_tag));
+  wire [3*PrW-1:0] pr_c  = cp_tag[CpTagW-1 -: 3*PrW];
+  wire [TW-1:0]    t_c   = cp_tag[TW+1+TagW-1 -: TW];
+  wire             ovf_c = cp_tag[TagW];
+  wire [TagW-1:0]  tag_c = cp_tag[TagW-1:0];
+
+  // ---- |pr − X|², saturated to Md2W bits ----
+  localparam integer DfW = CoordW + 4;      // pr − X
+  localparam integer SqW = 2 * DfW + 2;     // sum of three squares
+  wire [SqW-1:0] sq [0:2];
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_diff
+      wire signed [PrW-1:0] prc = pr_c[c*PrW +: PrW];
+      wire signed [XW-1:0]  xc  = x_cp[c*XW +: XW];
+      wire signed [DfW-1:0] df  = {{(DfW-PrW){prc[PrW-1]}}, prc} - {{(DfW-XW){xc[XW-1]}}, xc};
+      wire signed [2*DfW-1:0] df2 = df * df;
+      assign sq[c] = {2'b00, df2};
+    end
+  endgenerate
+  wire [SqW-1:0]  md2_full = sq[0] + sq[1] + sq[2];
+  wire            md2_big  = |md2_full[SqW-1:Md2W];
+  reg             valid_q2;
+  reg [Md2W-1:0]  md2_q2;
+  reg             ovf_q2;
+  reg [3*XW-1:0]  x_q2;
+  reg [3*PrW-1:0] pr_q2;
+  reg [TW-1:0]    t_q2;
+  reg [TagW-1:0]  tag_q2;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_q2 <= 1'b0;
+    else         valid_q2 <= cp_valid;
+  end
+  always @(posedge clk_i) begin
+    md2_q2 <= md2_big ? {Md2W{1'b1}} : md2_full[Md2W-1:0];
+    ovf_q2 <= ovf_c | md2_big;
+    x_q2   <= x_cp;
+    pr_q2  <= pr_c;
+    t_q2   <= t_c;
+    tag_q2 <= tag_c;
+  end
+
+  // ---- md: the square root (seed metric) or the square itself ----
+  generate
+    if (Metric == 0) begin : g_abs
+      localparam integer OutTagW = 3*XW + 3*PrW + TW + 1 + TagW;
+      wire [OutTagW-1:0] out_tag;
+      wire [CoordW+3:0]  root;
+      rpu_sqrt #(.RadW(Md2W), .SqrtW(SqrtW), .TagW(OutTagW)) u_md (
+        .clk_i, .rst_ni, .valid_i(valid_q2), .rad_i(md2_q2),
+        .tag_i({x_q2, pr_q2, t_q2, ovf_q2, tag_q2}),
+        .valid_o(valid_o), .root_o(root), .tag_o(out_tag));
+      assign md_o  = root;
+      assign x_o   = out_tag[OutTagW-1 -: 3*XW];
+      assign pr_o  = out_tag[OutTagW-3*XW-1 -: 3*PrW];
+      assign t_o   = out_tag[TW+1+TagW-1 -: TW];
+      assign ovf_o = out_tag[TagW];
+      assign tag_o = out_tag[TagW-1:0];
+    end else begin : g_squared
+      assign valid_o = valid_q2;
+      assign md_o    = md2_q2;
+      assign x_o     = x_q2;
+      assign pr_o    = pr_q2;
+      assign t_o     = t_q2;
+      assign ovf_o   = ovf_q2;
+      assign tag_o   = tag_q2;
+    end
+  endgenerate
+  wire unused_sq = ^{sq[0][SqW-1:SqW-2], sq[1][SqW-1:SqW-2], sq[2][SqW-1:SqW-2]};
+endmodule
+
+`default_nettype wire
