@@ -1,0 +1,13 @@
+# rpu_ray_gen (with rpu_sqrt and rpu_div): camera descriptors of scenes/curve12.json and
+# scenes/airfield.json from the scene compiler. Default widths (FV = 24, FE = 16): every pixel of
+# curve12, the corners, 40,000 random airfield pixels and alternating cameras; FV = FE = 12: a
+# few thousand random pixels of both scenes.
+set(RPU_RAY_GEN_SOURCES ${RPU_RTL_DIR}/rpu_ray_gen.v ${RPU_RTL_DIR}/rpu_sqrt.v
+                        ${RPU_RTL_DIR}/rpu_div.v)
+rpu_verilated_test(tb_rpu_ray_gen TOP rpu_ray_gen TB tb/tb_rpu_ray_gen.cpp
+                   SOURCES ${RPU_RAY_GEN_SOURCES} PARAMS -GTagW=12
+                   DEFS DIR_FRAC=24 EDGE_FRAC=16 IDX_W=14 TAG_W=12 RAYGEN_FULL=1
+                        RPU_SCENE_DIR="${PROJECT_SOURCE_DIR}/scenes")
+rpu_verilated_test(tb_rpu_ray_gen_fv12_fe12 TOP rpu_ray_gen TB tb/tb_rpu_ray_gen.cpp
+                   SOURCES ${RPU_RAY_GEN_SOURCES} PARAMS -GDirFrac=12 -GEdgeFrac=12
+                   DEFS DIR_FRAC=12 EDGE_FRAC=12 IDX_W=14 RPU_SCENE_DIR="${PROJECT_SOURCE_DIR}/scenes")
