@@ -4,9 +4,9 @@
 # FV + 3 quotient bits.
 rpu_verilated_test(tb_rpu_div_n10_d8_q10 TOP rpu_div TB tb/tb_rpu_div.cpp
                    PARAMS -GNumW=10 -GDenW=8 -GQuotW=10 DEFS NUM_W=10 DEN_W=8 QUOT_W=10)
-rpu_verilated_test(tb_rpu_div_n16_d4_q8 TOP rpu_div TB tb/tb_rpu_div.cpp
+rpu_verilated_test(tb_rpu_div_n16_d4_q8 EXTRA TOP rpu_div TB tb/tb_rpu_div.cpp
                    PARAMS -GNumW=16 -GDenW=4 -GQuotW=8 DEFS NUM_W=16 DEN_W=4 QUOT_W=8)
-rpu_verilated_test(tb_rpu_div_n8_d8_q1 TOP rpu_div TB tb/tb_rpu_div.cpp
+rpu_verilated_test(tb_rpu_div_n8_d8_q1 EXTRA TOP rpu_div TB tb/tb_rpu_div.cpp
                    PARAMS -GNumW=8 -GDenW=8 -GQuotW=1 DEFS NUM_W=8 DEN_W=8 QUOT_W=1)
 rpu_verilated_test(tb_rpu_div_recip24 TOP rpu_div TB tb/tb_rpu_div.cpp
                    PARAMS -GNumW=51 -GDenW=28 -GQuotW=27 -GTagW=16
