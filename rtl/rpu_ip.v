@@ -1,0 +1,209 @@
+// rpu_ip: the K-step iterative process (ALGORITHM 1.2 step 3), twin of rpu::ref::ip_process.
+// A start unit evaluates the candidates τ = 0 and τ = 1; then
+//   Unrolled = 1: K rpu_ip_step units in a pipeline, each with its k wired in: one pair per
+//                 cycle, fixed latency, ready_o = 1;
+//   Unrolled = 0: one rpu_ip_step unit reused K times: items circulate through it, a returning
+//                 item has priority over a new one, so it accepts about one pair per K cycles.
+//                 New pairs wait in a FIFO after the start unit; ready_o is credit-counted so
+//                 that FIFO never overflows.
+// Results leave in completion order, which is the input order (both forms keep order: the ring
+// never lets a younger item overtake, see the FIFO and the fixed loop latency).
+`default_nettype none
+
+module rpu_ip #(
+  parameter integer CoordW   = 24,  // position width (12..40)
+  parameter integer TFrac    = 24,  // fraction bits of t (8..48)
+  parameter integer UnitFrac = 16,  // fraction bits of u_k (8..40)
+  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
+  parameter integer N        = 16,  // result bits of τ (1..40)
+  parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
+  parameter integer Metric   = 0,   // 0: |pr − X|, 1: |pr − X|²
+  parameter integer Unrolled = 1,   // 1: K step units, 0: one step unit reused K times
+  parameter integer FifoLog2 = 8,   // iterative form: log2 of the start FIFO depth (2..12)
+  parameter integer CtxW     = 1,   // caller's context passed through
+  // Derived (do not override).
+  parameter integer K    = N / N1,
+  parameter integer TW   = TFrac + 3,
+  parameter integer DW   = CoordW + 1,
+  parameter integer UW   = UnitFrac + 2,
+  parameter integer HW   = CoordW + 5,
+  parameter integer L2W  = 2 * CoordW + 3,
+  parameter integer XW   = CoordW + 3,
+  parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
+  parameter integer StW  = N + TW + 3*XW + MdW + MdW
+) (
+  input  wire                clk_i,
+  input  wire                rst_ni,
+  input  wire                valid_i,
+  output wire                ready_o,
+  input  wire [3*CoordW-1:0] a_i,
+  input  wire [3*DW-1:0]     ab_i,
+  input  wire [TW-1:0]       alpha_i,
+  input  wire [TW-1:0]       beta_i,
+  input  wire [3*CoordW-1:0] p1_i,
+  input  wire [3*DW-1:0]     d_i,
+  input  wire [L2W-1:0]      l2_i,
+  input  wire [1:0]          mode1_i,
+  input  wire [HW-1:0]       h1_i,
+  input  wire [CoordW-1:0]   a1_i,
+  input  wire [TFrac-1:0]    b1_i,
+  input  wire [3*UW-1:0]     u1_i,
+  input  wire [1:0]          mode2_i,
+  input  wire [HW-1:0]       h2_i,
+  input  wire [CoordW-1:0]   a2_i,
+  input  wire [TFrac-1:0]    b2_i,
+  input  wire [3*UW-1:0]     u2_i,
+  input  wire [CtxW-1:0]     ctx_i,
+  output wire                valid_o,
+  output wire [StW-1:0]      state_o,    // {τ_K, lo.t, lo.X, lo.md, hi.md}
+  output wire                ovf_o,
+  output wire [CtxW-1:0]     ctx_o
+);
+  localparam integer KW = 8;
+  // Everything a step needs, as one bundle: interval, segment, the caller's context, overflow.
+  localparam integer PairW = 3*CoordW + 3*DW + 2*TW + 3*CoordW + 3*DW + L2W
+                           + 2 * (2 + HW + CoordW + TFrac + 3*UW);
+  localparam integer BunW  = PairW + CtxW + 1;
+
+  initial begin
+    if (K > 255) $fatal(1, "rpu_ip: N/N1 must be below 256");
+    if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_ip: FifoLog2 must be in 2..12");
+  end
+
+  wire [PairW-1:0] pair_in = {a_i, ab_i, alpha_i, beta_i, p1_i, d_i, l2_i,
+                              mode1_i, h1_i, a1_i, b1_i, u1_i, mode2_i, h2_i, a2_i, b2_i, u2_i};
+
+  // ---- start unit: candidates τ = 0 (carries the bundle) and τ = 1 ----
+  wire            s_valid, s_ovf0, s_ovf1;
+  wire [TW-1:0]   s_t0, s_t1_unused;
+  wire [3*XW-1:0] s_x0, s_x1_unused;
+  wire [MdW-1:0]  s_md0, s_md1;
+  wire [BunW-1:0] s_bun;
+  wire            s_valid1_unused, s_tag1_unused;
+  wire [3*(CoordW+2)-1:0] s_pr0_unused, s_pr1_unused;
+  rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
+                  .Metric(Metric), .TagW(BunW)) u_start0 (
+    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .m_i({(N+1){1'b0}}), .a_i, .ab_i, .alpha_i,
+    .beta_i, .p1_i, .d_i, .l2_i, .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i,
+    .b2_i, .u2_i, .tag_i({pair_in, ctx_i, 1'b0}), .valid_o(s_valid), .t_o(s_t0), .x_o(s_x0),
+    .pr_o(s_pr0_unused), .md_o(s_md0), .ovf_o(s_ovf0), .tag_o(s_bun));
+  rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
+                  .Metric(Metric), .TagW(1)) u_start1 (
+    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .m_i({1'b1, {N{1'b0}}}), .a_i, .ab_i, .alpha_i,
+    .beta_i, .p1_i, .d_i, .l2_i, .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i,
+    .b2_i, .u2_i, .tag_i(1'b0), .valid_o(s_valid1_unused), .t_o(s_t1_unused), .x_o(s_x1_unused),
+    .pr_o(s_pr1_unused), .md_o(s_md1), .ovf_o(s_ovf1), .tag_o(s_tag1_unused));
+  wire unused_start = ^{s_valid1_unused, s_t1_unused, s_x1_unused, s_tag1_unused, s_pr0_unused,
+                        s_pr1_unused, s_bun[0]};
+  wire [StW-1:0]  s_state = {{N{1'b0}}, s_t0, s_x0, s_md0, s_md1};
+  wire [BunW-1:0] s_bundle = {s_bun[BunW-1:1], s_ovf0 | s_ovf1};
+
+  // Unpacking a bundle into the step's ports.
+  `define RPU_IP_STEP_PORTS(B) \
+    .a_i(B[BunW-1 -: 3*CoordW]), \
+    .ab_i(B[BunW-3*CoordW-1 -: 3*DW]), \
+    .alpha_i(B[BunW-3*CoordW-3*DW-1 -: TW]), \
+    .beta_i(B[BunW-3*CoordW-3*DW-TW-1 -: TW]), \
+    .p1_i(B[BunW-3*CoordW-3*DW-2*TW-1 -: 3*CoordW]), \
+    .d_i(B[BunW-6*CoordW-3*DW-2*TW-1 -: 3*DW]), \
+    .l2_i(B[BunW-6*CoordW-6*DW-2*TW-1 -: L2W]), \
+    .mode1_i(B[BunW-6*CoordW-6*DW-2*TW-L2W-1 -: 2]), \
+    .h1_i(B[BunW-6*CoordW-6*DW-2*TW-L2W-3 -: HW]), \
+    .a1_i(B[BunW-6*CoordW-6*DW-2*TW-L2W-HW-3 -: CoordW]), \
+    .b1_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-3 -: TFrac]), \
+    .u1_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-TFrac-3 -: 3*UW]), \
+    .mode2_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-TFrac-3*UW-3 -: 2]), \
+    .h2_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-TFrac-3*UW-5 -: HW]), \
+    .a2_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-2*HW-TFrac-3*UW-5 -: CoordW]), \
+    .b2_i(B[BunW-8*CoordW-6*DW-2*TW-L2W-2*HW-TFrac-3*UW-5 -: TFrac]), \
+    .u2_i(B[BunW-8*CoordW-6*DW-2*TW-L2W-2*HW-2*TFrac-3*UW-5 -: 3*UW])
+
+  generate
+    if (Unrolled != 0) begin : g_unrolled
+      assign ready_o = 1'b1;
+      wire [K:0]          v;
+      wire [(K+1)*StW-1:0] st;
+      wire [(K+1)*BunW-1:0] bun;
+      assign v[0] = s_valid;
+      assign st[0 +: StW] = s_state;
+      assign bun[0 +: BunW] = s_bundle;
+      genvar k;
+      for (k = 1; k <= K; k = k + 1) begin : g_step
+        wire [BunW-1:0] b = bun[(k-1)*BunW +: BunW];
+        wire [KW-1:0]   k_unused;
+        wire            step_ovf;
+        wire [BunW-1:0] b_out;
+        wire            tag_unused;
+        rpu_ip_step #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
+                      .N1(N1), .Metric(Metric), .Step(k), .CtxW(BunW), .TagW(1)) u_step (
+          .clk_i, .rst_ni, .valid_i(v[k-1]), .k_i({KW{1'b0}}), .state_i(st[(k-1)*StW +: StW]),
+          `RPU_IP_STEP_PORTS(b), .ctx_i(b), .tag_i(1'b0),
+          .valid_o(v[k]), .k_o(k_unused), .state_o(st[k*StW +: StW]), .ovf_o(step_ovf),
+          .ctx_o(b_out), .tag_o(tag_unused));
+        assign bun[k*BunW +: BunW] = {b_out[BunW-1:1], b_out[0] | step_ovf};
+        wire unused_k = ^{k_unused, tag_unused};
+      end
+      assign valid_o = v[K];
+      assign state_o = st[K*StW +: StW];
+      assign ovf_o   = bun[K*BunW];
+      assign ctx_o   = bun[K*BunW+1 +: CtxW];
+      wire unused_pair = ^bun[K*BunW+CtxW+1 +: PairW];
+    end else begin : g_iterative
+      // Start FIFO: pairs leaving the start unit wait for a free slot of the step unit.
+      localparam integer Depth = 1 << FifoLog2;
+      localparam integer FW = StW + BunW;
+      reg [FW-1:0]       fifo_q [0:Depth-1];
+      reg [FifoLog2:0]   wr_q, rd_q;
+      // Credits: pairs accepted and not yet taken by the step unit never exceed the FIFO depth.
+      reg [FifoLog2:0]   owed_q;  // accepted, not yet popped into the ring
+      wire               loop_valid;
+      wire [KW-1:0]      loop_k;
+      wire [StW-1:0]     loop_st;
+      wire [BunW-1:0]    loop_bun;
+      wire               loop_ovf;
+      wire               tag_unused;
+      wire               recirc   = loop_valid && (loop_k != K[KW-1:0]);
+      wire               fifo_any = wr_q != rd_q;
+      wire               pop      = fifo_any && !recirc;
+      wire               accept   = valid_i && ready_o;
+      assign ready_o = owed_q < Depth[FifoLog2:0];
+      always @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          wr_q   <= {(FifoLog2+1){1'b0}};
+          rd_q   <= {(FifoLog2+1){1'b0}};
+          owed_q <= {(FifoLog2+1){1'b0}};
+        end else begin
+          if (s_valid) wr_q <= wr_q + 1'b1;
+          if (pop)     rd_q <= rd_q + 1'b1;
+          owed_q <= owed_q + {{FifoLog2{1'b0}}, accept} - {{FifoLog2{1'b0}}, pop};
+        end
+      end
+      always @(posedge clk_i) begin
+        if (s_valid) fifo_q[wr_q[FifoLog2-1:0]] <= {s_state, s_bundle};
+      end
+      wire [FW-1:0]   head   = fifo_q[rd_q[FifoLog2-1:0]];
+      // The step unit's input: a returning item (its next k), else the FIFO head (k = 1).
+      wire            in_v   = recirc || pop;
+      wire [KW-1:0]   in_k   = recirc ? loop_k + 1'b1 : {{(KW-1){1'b0}}, 1'b1};
+      wire [StW-1:0]  in_st  = recirc ? loop_st : head[FW-1 -: StW];
+      wire [BunW-1:0] in_bun = recirc ? {loop_bun[BunW-1:1], loop_bun[0] | loop_ovf}
+                                      : head[BunW-1:0];
+      wire [BunW-1:0] out_bun;
+      rpu_ip_step #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
+                    .N1(N1), .Metric(Metric), .Step(0), .CtxW(BunW), .TagW(1)) u_step (
+        .clk_i, .rst_ni, .valid_i(in_v), .k_i(in_k), .state_i(in_st),
+        `RPU_IP_STEP_PORTS(in_bun), .ctx_i(in_bun), .tag_i(1'b0),
+        .valid_o(loop_valid), .k_o(loop_k), .state_o(loop_st), .ovf_o(loop_ovf),
+        .ctx_o(out_bun), .tag_o(tag_unused));
+      assign loop_bun = out_bun;
+      assign valid_o  = loop_valid && (loop_k == K[KW-1:0]);
+      assign state_o  = loop_st;
+      assign ovf_o    = loop_bun[0] | loop_ovf;
+      assign ctx_o    = loop_bun[1 +: CtxW];
+      wire unused_iter = ^{tag_unused, loop_bun[BunW-1 -: PairW]};
+    end
+  endgenerate
+  `undef RPU_IP_STEP_PORTS
+endmodule
+
+`default_nettype wire

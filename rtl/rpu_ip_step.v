@@ -1,0 +1,179 @@
+// rpu_ip_step: one step of the iterative process (ALGORITHM 1.2 step 3), twin of
+// rpu::ref::ip_step. The J − 1 new candidates m_j = τ + j·2^(N − N1·k), j = 1..J−1, are
+// evaluated in parallel; with md_0 = lo.md and md_J = hi.md the pair sums sd_j = md_j + md_{j+1}
+// go through a lowest-index argmin η, and the next state is
+//   τ' = τ + η·2^(N − N1·k),  lo' = candidate η (or lo),  hi'.md = md_{η+1} (or hi.md).
+// Step = k wired in (unrolled pipeline), or Step = 0: k comes with the item (iterative form).
+// The segment and interval context rides in candidate 1's tag. Fixed latency.
+`default_nettype none
+
+module rpu_ip_step #(
+  parameter integer CoordW   = 24,  // position width (12..40)
+  parameter integer TFrac    = 24,  // fraction bits of t (8..48)
+  parameter integer UnitFrac = 16,  // fraction bits of u_k (8..40)
+  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
+  parameter integer N        = 16,  // result bits of τ (1..40)
+  parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
+  parameter integer Metric   = 0,   // 0: |pr − X|, 1: |pr − X|²
+  parameter integer Step     = 1,   // k of this unit (1..N/N1), or 0: taken from k_i
+  parameter integer CtxW     = 1,   // width of the segment/interval context passed through
+  parameter integer TagW     = 1,   // side-band bits (>= 1)
+  // Derived (do not override).
+  parameter integer K    = N / N1,
+  parameter integer J    = 1 << N1,
+  parameter integer KW   = 8,                     // step counter width
+  parameter integer TW   = TFrac + 3,
+  parameter integer DW   = CoordW + 1,
+  parameter integer UW   = UnitFrac + 2,
+  parameter integer HW   = CoordW + 5,
+  parameter integer L2W  = 2 * CoordW + 3,
+  parameter integer XW   = CoordW + 3,
+  parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
+  parameter integer StW  = N + TW + 3*XW + MdW + MdW  // {tau, lo.t, lo.X, lo.md, hi.md}
+) (
+  input  wire                clk_i,
+  input  wire                rst_ni,
+  input  wire                valid_i,
+  input  wire [KW-1:0]       k_i,        // this step's k (used when Step == 0)
+  input  wire [StW-1:0]      state_i,
+  input  wire [3*CoordW-1:0] a_i,
+  input  wire [3*DW-1:0]     ab_i,
+  input  wire [TW-1:0]       alpha_i,
+  input  wire [TW-1:0]       beta_i,
+  input  wire [3*CoordW-1:0] p1_i,
+  input  wire [3*DW-1:0]     d_i,
+  input  wire [L2W-1:0]      l2_i,
+  input  wire [1:0]          mode1_i,
+  input  wire [HW-1:0]       h1_i,
+  input  wire [CoordW-1:0]   a1_i,
+  input  wire [TFrac-1:0]    b1_i,
+  input  wire [3*UW-1:0]     u1_i,
+  input  wire [1:0]          mode2_i,
+  input  wire [HW-1:0]       h2_i,
+  input  wire [CoordW-1:0]   a2_i,
+  input  wire [TFrac-1:0]    b2_i,
+  input  wire [3*UW-1:0]     u2_i,
+  input  wire [CtxW-1:0]     ctx_i,      // passed through unchanged (the caller's descriptors)
+  input  wire [TagW-1:0]     tag_i,
+  output reg                 valid_o,
+  output reg  [KW-1:0]       k_o,        // this step's k
+  output reg  [StW-1:0]      state_o,
+  output reg                 ovf_o,      // a candidate of this step saturated
+  output reg  [CtxW-1:0]     ctx_o,
+  output reg  [TagW-1:0]     tag_o
+);
+  initial begin
+    if (N1 < 1 || N1 > 8) $fatal(1, "rpu_ip_step: N1 must be in 1..8");
+    if (N % N1 != 0) $fatal(1, "rpu_ip_step: N must be a multiple of N1");
+    if (Step < 0 || Step > K) $fatal(1, "rpu_ip_step: Step must be in 0..N/N1");
+  end
+
+  // State fields.
+  wire [N-1:0]   tau_in = state_i[StW-1 -: N];
+  wire [KW-1:0]  k_in   = Step == 0 ? k_i : Step[KW-1:0];
+  // Shift of this step: N − N1·k (k ≥ 1).
+  wire [KW+7:0]  shift  = N[KW+7:0] - N1[KW+7:0] * {8'd0, k_in};
+
+  // The side band carried by candidate 1: everything the step needs after the candidates.
+  localparam integer SbW = KW + StW + CtxW + TagW;
+  wire [SbW-1:0] sb_in = {k_in, state_i, ctx_i, tag_i};
+
+  wire [J-2:0]      c_valid;
+  wire [(J-1)*TW-1:0]   c_t;
+  wire [(J-1)*3*XW-1:0] c_x;
+  wire [(J-1)*MdW-1:0]  c_md;
+  wire [J-2:0]      c_ovf;
+  wire [SbW-1:0]    sb_out;
+  genvar j;
+  generate
+    for (j = 1; j < J; j = j + 1) begin : g_cand
+      wire [N:0] m = {1'b0, tau_in} + ({{N{1'b0}}, 1'b1} * j << shift);
+      wire [3*(CoordW+2)-1:0] pr_unused;
+      if (j == 1) begin : g_carry
+        rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
+                        .Metric(Metric), .TagW(SbW)) u_cand (
+          .clk_i, .rst_ni, .valid_i, .m_i(m), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i, .d_i, .l2_i,
+          .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i, .b2_i, .u2_i,
+          .tag_i(sb_in), .valid_o(c_valid[j-1]), .t_o(c_t[(j-1)*TW +: TW]),
+          .x_o(c_x[(j-1)*3*XW +: 3*XW]), .pr_o(pr_unused), .md_o(c_md[(j-1)*MdW +: MdW]),
+          .ovf_o(c_ovf[j-1]), .tag_o(sb_out));
+      end else begin : g_plain
+        wire tag_unused;
+        rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
+                        .Metric(Metric), .TagW(1)) u_cand (
+          .clk_i, .rst_ni, .valid_i, .m_i(m), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i, .d_i, .l2_i,
+          .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i, .b2_i, .u2_i,
+          .tag_i(1'b0), .valid_o(c_valid[j-1]), .t_o(c_t[(j-1)*TW +: TW]),
+          .x_o(c_x[(j-1)*3*XW +: 3*XW]), .pr_o(pr_unused), .md_o(c_md[(j-1)*MdW +: MdW]),
+          .ovf_o(c_ovf[j-1]), .tag_o(tag_unused));
+        wire unused_plain = tag_unused;
+      end
+      wire unused_pr = ^pr_unused;
+    end
+  endgenerate
+
+  // After the candidates: unpack the side band.
+  wire [KW-1:0]   k_c     = sb_out[SbW-1 -: KW];
+  wire [StW-1:0]  st_c    = sb_out[SbW-KW-1 -: StW];
+  wire [CtxW-1:0] ctx_c   = sb_out[CtxW+TagW-1 -: CtxW];
+  wire [TagW-1:0] tag_c   = sb_out[TagW-1:0];
+  wire [N-1:0]    tau_c   = st_c[StW-1 -: N];
+  wire [TW-1:0]   lo_t_c  = st_c[StW-N-1 -: TW];
+  wire [3*XW-1:0] lo_x_c  = st_c[StW-N-TW-1 -: 3*XW];
+  wire [MdW-1:0]  lo_md_c = st_c[2*MdW-1 -: MdW];
+  wire [MdW-1:0]  hi_md_c = st_c[MdW-1:0];
+  wire [KW+7:0]   shift_c = N[KW+7:0] - N1[KW+7:0] * {8'd0, k_c};
+
+  // md_j, j = 0..J, and the lowest-index argmin of the pair sums (strict <: the first wins).
+  reg [MdW-1:0] md [0:J];
+  reg [MdW:0]   best;
+  reg [N1-1:0]  eta;
+  integer q;
+  always @(*) begin
+    md[0] = lo_md_c;
+    md[J] = hi_md_c;
+    for (q = 1; q < J; q = q + 1) md[q] = c_md[(q-1)*MdW +: MdW];
+    best = {1'b0, md[0]} + {1'b0, md[1]};
+    eta  = {N1{1'b0}};
+    for (q = 1; q < J; q = q + 1) begin
+      if (({1'b0, md[q]} + {1'b0, md[q+1]}) < best) begin
+        best = {1'b0, md[q]} + {1'b0, md[q+1]};
+        eta  = q[N1-1:0];
+      end
+    end
+  end
+
+  // The next state.
+  wire [N-1:0] tau_next = tau_c + ({{(N-N1){1'b0}}, eta} << shift_c);
+  reg  [TW-1:0]   lo_t_n;
+  reg  [3*XW-1:0] lo_x_n;
+  reg  [MdW-1:0]  lo_md_n, hi_md_n;
+  integer e;
+  always @(*) begin
+    e = {{(32-N1){1'b0}}, eta};
+    if (e == 0) begin
+      lo_t_n  = lo_t_c;
+      lo_x_n  = lo_x_c;
+    end else begin
+      lo_t_n  = c_t[(e-1)*TW +: TW];
+      lo_x_n  = c_x[(e-1)*3*XW +: 3*XW];
+    end
+    lo_md_n = md[e];
+    hi_md_n = md[e + 1];
+  end
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else         valid_o <= c_valid[0];
+  end
+  always @(posedge clk_i) begin
+    k_o     <= k_c;
+    state_o <= {tau_next, lo_t_n, lo_x_n, lo_md_n, hi_md_n};
+    ovf_o   <= |c_ovf;
+    ctx_o   <= ctx_c;
+    tag_o   <= tag_c;
+  end
+  wire unused_step = ^{c_valid[J-2:0], best};
+endmodule
+
+`default_nettype wire
