@@ -1,0 +1,429 @@
+// rpu_texture: the vector-texture coverage test of one (p0, segment) pair, twin of
+// `rpu::ref::texture_unit(params, segment, p0, ovf)`. With r1 = p0 − p1 and r2 = r1 − d
+// (= p0 − p2):
+//   pr1    = r1·d ≥ 0 ∧ r2·d ≤ 0                               between the end planes, exact
+//   pr2    = |r1|² ≤ w0_2 ∨ |r2|² ≤ w0_2                        round end caps, exact
+//   t̂      = chord(clamp(r1·d, 0, L2))                          rpu_chord, Q(3.FT)
+//   X      = s(t̂) = curve_point(t̂, g1(t̂), g2(t̂))               rpu_guide ×2, rpu_curve_point
+//   pr3    = |X − p0|² ≤ w0_2                                    exact
+//   covers = pr1 ∧ (pr2 ∨ pr3)
+// ovf_o is the pair's sticky overflow bit as the twin sets it: the chord parameter saturated
+// (never for a descriptor: the clamped dot gives t̂ ∈ [0, 1]) or an arc guide's radicand did.
+// Every output is computed for every operand, as in the twin (t̂, X and pr3 also where pr1 fails).
+//
+// Pipeline (Latency = SqrtStages + 15 cycles, 44 at the defaults; one pair per cycle, no stall):
+//   1        r1, r2                                  (every input is sampled here)
+//   1        the twelve products r1_k·d_k, r2_k·d_k, r1_k², r2_k² (exact)
+//   1        their sums; pr1, pr2; clamp(r1·d, 0, L2)
+//   2        rpu_chord: t̂                                            (context in its tag)
+//   4+SqSt   rpu_guide ×2: g1, g2                          (context in guide 1's tag)
+//   3        rpu_curve_point: X                            (context in its tag)
+//   1        e = X − p0
+//   1        e_k² (exact)
+//   1        pr3, covers; outputs registered
+// SqrtStages is rpu_sqrt's depth for the guides' (2CW+10)-bit radicand: CW+5 when exact.
+//
+// Widths hold every port value exactly: |r1_k| < 2^CW, |r2_k| < 2^(CW+1) (CW+2 bits), r1·d in
+// 2CW+3 bits and r2·d in 2CW+4 bits signed, |r1|² < 3·2^(2CW), |r2|² < 3·2^(2CW+2), and
+// |X − p0| < 2^(CW+3) per component (CW+4 bits), |X − p0|² < 2^(2CW+6). w0_2 is 2CW+1 bits
+// unsigned: it holds round((w0·S)²) for a half width w0·S up to 2^CW LSB, the whole coordinate
+// range (the normalisation keeps w0·S < 7/16·2^CW).
+`default_nettype none
+
+module rpu_texture #(
+  parameter integer CoordW   = 24,  // CW: signed width of positions (12..40)
+  parameter integer TFrac    = 24,  // FT: fraction bits of t̂ (8..48, 2·CW+3+FT <= 126)
+  parameter integer UnitFrac = 16,  // FU: fraction bits of the guide unit vectors (8..40)
+  parameter integer InvW     = 18,  // IW: mantissa bits of 1/L² (8..40)
+  parameter integer SqrtW    = 0,   // widest guide square-root radicand; 0 = exact (16..126)
+  parameter integer TagW     = 1,   // side-band bits carried with each pair (>= 1)
+  // Derived (do not override).
+  parameter integer TW   = TFrac + 3,       // t̂: Q(3.FT)
+  parameter integer DW   = CoordW + 1,      // d = p2 − p1
+  parameter integer UW   = UnitFrac + 2,    // u: Q(2.FU)
+  parameter integer HW   = CoordW + 5,      // guide height h (rpu_guide)
+  parameter integer L2W  = 2 * CoordW + 3,  // L² = |d|²
+  parameter integer XW   = CoordW + 3,      // X (rpu_curve_point)
+  parameter integer W02W = 2 * CoordW + 1   // w0_2, unsigned
+) (
+  input  wire                clk_i,
+  input  wire                rst_ni,
+  input  wire                valid_i,
+  input  wire [3*CoordW-1:0] p0_i,      // ray/plane point, {z, y, x}, LSB (z = 0 from rpu_ray_plane;
+                                        // any z is taken, as by the twin)
+  input  wire [3*CoordW-1:0] p1_i,      // segment start, {z, y, x}, LSB
+  input  wire [3*DW-1:0]     d_i,       // p2 − p1, {z, y, x}, LSB
+  input  wire [L2W-1:0]      l2_i,      // |d|², LSB², unsigned
+  input  wire [InvW-1:0]     inv_m_i,   // 1/L² = inv_m · 2^-inv_s
+  input  wire [6:0]          inv_s_i,
+  input  wire [1:0]          mode1_i,   // guide of end 1: 0 straight, 1 arc, 2 flat
+  input  wire [HW-1:0]       h1_i,
+  input  wire [CoordW-1:0]   a1_i,
+  input  wire [TFrac-1:0]    b1_i,
+  input  wire [3*UW-1:0]     u1_i,
+  input  wire [1:0]          mode2_i,   // guide of end 2
+  input  wire [HW-1:0]       h2_i,
+  input  wire [CoordW-1:0]   a2_i,
+  input  wire [TFrac-1:0]    b2_i,
+  input  wire [3*UW-1:0]     u2_i,
+  input  wire [W02W-1:0]     w0_2_i,    // texture half-width², LSB², unsigned
+  input  wire [TagW-1:0]     tag_i,
+  output reg                 valid_o,
+  output reg                 pr1_o,
+  output reg                 pr2_o,
+  output reg                 pr3_o,
+  output reg                 covers_o,  // pr1 ∧ (pr2 ∨ pr3)
+  output reg  [TW-1:0]       t_o,       // t̂, Q(3.FT), signed
+  output reg  [3*XW-1:0]     x_o,       // X = s(t̂), {z, y, x}, LSB, signed each
+  output reg                 ovf_o,     // sticky overflow bit of the pair
+  output reg  [TagW-1:0]     tag_o
+);
+  localparam integer CW   = CoordW;
+  localparam integer R1W  = CW + 1;          // r1 = p0 − p1
+  localparam integer R2W  = CW + 2;          // r2 = r1 − d
+  localparam integer F1PW = R1W + DW;        // r1_k·d_k
+  localparam integer F2PW = R2W + DW;        // r2_k·d_k
+  localparam integer S1PW = 2 * R1W;         // r1_k²
+  localparam integer S2PW = 2 * R2W;         // r2_k²
+  localparam integer DotW = 2 * CW + 4;      // r1·d (2CW+3 bits suffice), the chord's dot
+  localparam integer F2W  = 2 * CW + 5;      // r2·d
+  localparam integer S1W  = 2 * CW + 3;      // |r1|² (< 2^(2CW+2)) with w0_2, signed compare
+  localparam integer S2W  = 2 * CW + 5;      // |r2|² (< 2^(2CW+4)) with w0_2, signed compare
+  localparam integer EW   = CW + 4;          // e = X − p0
+  localparam integer EPW  = 2 * EW;          // e_k²
+  localparam integer ESW  = 2 * EW + 2;      // |e|² with w0_2, signed compare
+  localparam integer GW   = CW + 2;          // rpu_guide's g
+  localparam integer GdW  = 2 + HW + CW + TFrac;  // one guide's {mode, h, a, b}
+
+  initial begin
+    if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_texture: CoordW must be in 12..40");
+    if (TFrac < 8 || TFrac > 48) $fatal(1, "rpu_texture: TFrac must be in 8..48");
+    if (2 * CoordW + 3 + TFrac > 126) $fatal(1, "rpu_texture: 2*CoordW+3+TFrac must be <= 126");
+    if (UnitFrac < 8 || UnitFrac > 40) $fatal(1, "rpu_texture: UnitFrac must be in 8..40");
+    if (InvW < 8 || InvW > 40) $fatal(1, "rpu_texture: InvW must be in 8..40");
+    if (TagW < 1) $fatal(1, "rpu_texture: TagW must be >= 1");
+    if (TW != TFrac + 3 || DW != CoordW + 1 || UW != UnitFrac + 2 || HW != CoordW + 5 ||
+        L2W != 2 * CoordW + 3 || XW != CoordW + 3 || W02W != 2 * CoordW + 1)
+      $fatal(1, "rpu_texture: derived parameters must not be overridden");
+  end
+
+  genvar c;
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage 1: r1 = p0 − p1, r2 = p0 − p1 − d (exact).
+  // ---------------------------------------------------------------------------------------------
+  // The segment context used after the front end: {w0_2, p0, p1, d, u1, u2, l2, guide 1, guide 2}.
+  localparam integer CtxW = W02W + 6 * CW + 3 * DW + 6 * UW + L2W + 2 * GdW;
+  reg [3*R1W-1:0]  s1_r1_q;
+  reg [3*R2W-1:0]  s1_r2_q;
+  reg [CtxW-1:0]   s1_ctx_q;
+  reg [InvW+6:0]   s1_inv_q;
+  reg [TagW-1:0]   s1_tag_q;
+  reg              s1_valid_q;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_r
+      wire [CW-1:0]  p0 = p0_i[c*CW +: CW];
+      wire [CW-1:0]  p1 = p1_i[c*CW +: CW];
+      wire [DW-1:0]  d  = d_i[c*DW +: DW];
+      wire [R2W-1:0] p0x = {{(R2W - CW){p0[CW-1]}}, p0};
+      wire [R2W-1:0] p1x = {{(R2W - CW){p1[CW-1]}}, p1};
+      wire [R2W-1:0] dx  = {{(R2W - DW){d[DW-1]}}, d};
+      wire [R2W-1:0] r1  = p0x - p1x;  // |r1| < 2^CW: its low R1W bits are exact
+      always @(posedge clk_i) begin
+        s1_r1_q[c*R1W +: R1W] <= r1[R1W-1:0];
+        s1_r2_q[c*R2W +: R2W] <= r1 - dx;
+      end
+      wire unused_r1 = r1[R2W-1];
+    end
+  endgenerate
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) s1_valid_q <= 1'b0;
+    else         s1_valid_q <= valid_i;
+  end
+  always @(posedge clk_i) begin
+    s1_ctx_q <= {w0_2_i, p0_i, p1_i, d_i, u1_i, u2_i, l2_i,
+                 mode1_i, h1_i, a1_i, b1_i, mode2_i, h2_i, a2_i, b2_i};
+    s1_inv_q <= {inv_s_i, inv_m_i};
+    s1_tag_q <= tag_i;
+  end
+  wire [3*DW-1:0] s1_d = s1_ctx_q[6*UW + L2W + 2*GdW +: 3*DW];
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage 2: the products (exact, each operand sign-extended to the product width).
+  // ---------------------------------------------------------------------------------------------
+  reg [3*F1PW-1:0] s2_f1_q;
+  reg [3*F2PW-1:0] s2_f2_q;
+  reg [3*S1PW-1:0] s2_s1_q;
+  reg [3*S2PW-1:0] s2_s2_q;
+  reg [CtxW-1:0]   s2_ctx_q;
+  reg [InvW+6:0]   s2_inv_q;
+  reg [TagW-1:0]   s2_tag_q;
+  reg              s2_valid_q;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_prod
+      wire [R1W-1:0] r1 = s1_r1_q[c*R1W +: R1W];
+      wire [R2W-1:0] r2 = s1_r2_q[c*R2W +: R2W];
+      wire [DW-1:0]  d  = s1_d[c*DW +: DW];
+      wire signed [F1PW-1:0] f1 = $signed({{DW{r1[R1W-1]}}, r1}) * $signed({{R1W{d[DW-1]}}, d});
+      wire signed [F2PW-1:0] f2 = $signed({{DW{r2[R2W-1]}}, r2}) * $signed({{R2W{d[DW-1]}}, d});
+      wire signed [S1PW-1:0] s1 = $signed({{R1W{r1[R1W-1]}}, r1}) * $signed({{R1W{r1[R1W-1]}}, r1});
+      wire signed [S2PW-1:0] s2 = $signed({{R2W{r2[R2W-1]}}, r2}) * $signed({{R2W{r2[R2W-1]}}, r2});
+      always @(posedge clk_i) begin
+        s2_f1_q[c*F1PW +: F1PW] <= f1;
+        s2_f2_q[c*F2PW +: F2PW] <= f2;
+        s2_s1_q[c*S1PW +: S1PW] <= s1;
+        s2_s2_q[c*S2PW +: S2PW] <= s2;
+      end
+    end
+  endgenerate
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) s2_valid_q <= 1'b0;
+    else         s2_valid_q <= s1_valid_q;
+  end
+  always @(posedge clk_i) begin
+    s2_ctx_q <= s1_ctx_q;
+    s2_inv_q <= s1_inv_q;
+    s2_tag_q <= s1_tag_q;
+  end
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage 3: r1·d, r2·d, |r1|², |r2|²; pr1, pr2; the chord's dot clamp(r1·d, 0, L2).
+  // ---------------------------------------------------------------------------------------------
+  wire [W02W-1:0] s2_w02 = s2_ctx_q[CtxW-1 -: W02W];
+  wire [L2W-1:0]  s2_l2  = s2_ctx_q[2*GdW +: L2W];
+  wire signed [DotW-1:0] f1sum = {{(DotW-F1PW){s2_f1_q[1*F1PW-1]}}, s2_f1_q[0*F1PW +: F1PW]} +
+                                 {{(DotW-F1PW){s2_f1_q[2*F1PW-1]}}, s2_f1_q[1*F1PW +: F1PW]} +
+                                 {{(DotW-F1PW){s2_f1_q[3*F1PW-1]}}, s2_f1_q[2*F1PW +: F1PW]};
+  wire signed [F2W-1:0]  f2sum = {{(F2W-F2PW){s2_f2_q[1*F2PW-1]}}, s2_f2_q[0*F2PW +: F2PW]} +
+                                 {{(F2W-F2PW){s2_f2_q[2*F2PW-1]}}, s2_f2_q[1*F2PW +: F2PW]} +
+                                 {{(F2W-F2PW){s2_f2_q[3*F2PW-1]}}, s2_f2_q[2*F2PW +: F2PW]};
+  // The squares are non-negative: w0_2 − Σ r_k² ≥ 0 is the exact test Σ r_k² ≤ w0_2.
+  wire signed [S1W-1:0]  m1 = {{(S1W-W02W){1'b0}}, s2_w02} -
+                              {{(S1W-S1PW){1'b0}}, s2_s1_q[0*S1PW +: S1PW]} -
+                              {{(S1W-S1PW){1'b0}}, s2_s1_q[1*S1PW +: S1PW]} -
+                              {{(S1W-S1PW){1'b0}}, s2_s1_q[2*S1PW +: S1PW]};
+  wire signed [S2W-1:0]  m2 = {{(S2W-W02W){1'b0}}, s2_w02} -
+                              {{(S2W-S2PW){1'b0}}, s2_s2_q[0*S2PW +: S2PW]} -
+                              {{(S2W-S2PW){1'b0}}, s2_s2_q[1*S2PW +: S2PW]} -
+                              {{(S2W-S2PW){1'b0}}, s2_s2_q[2*S2PW +: S2PW]};
+  // L2 − r1·d < 0 is r1·d > L2 (one bit wider than the dot: exact for every r1·d).
+  wire signed [DotW:0]   l2d = $signed({2'b00, s2_l2}) - $signed({f1sum[DotW-1], f1sum});
+  wire                   f1_neg = f1sum[DotW-1];
+  wire                   f1_big = l2d[DotW];
+  wire [DotW-1:0]        dot    = f1_neg ? {DotW{1'b0}} : f1_big ? {1'b0, s2_l2} : f1sum;
+  wire                   pr1    = ~f1_neg & (f2sum[F2W-1] | ~(|f2sum));
+  wire                   pr2    = ~m1[S1W-1] | ~m2[S2W-1];
+
+  reg [DotW-1:0]   s3_dot_q;
+  reg              s3_pr1_q, s3_pr2_q;
+  reg [CtxW-1:0]   s3_ctx_q;
+  reg [InvW+6:0]   s3_inv_q;
+  reg [TagW-1:0]   s3_tag_q;
+  reg              s3_valid_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) s3_valid_q <= 1'b0;
+    else         s3_valid_q <= s2_valid_q;
+  end
+  always @(posedge clk_i) begin
+    s3_dot_q <= dot;
+    s3_pr1_q <= pr1;
+    s3_pr2_q <= pr2;
+    s3_ctx_q <= s2_ctx_q;
+    s3_inv_q <= s2_inv_q;
+    s3_tag_q <= s2_tag_q;
+  end
+
+  // ---------------------------------------------------------------------------------------------
+  // The chord parameter t̂; the pair's context rides in the chord's tag.
+  // ---------------------------------------------------------------------------------------------
+  localparam integer ChTagW = TagW + 2 + CtxW;
+  wire              ch_valid, ch_ovf;
+  wire [TW-1:0]     ch_t;
+  wire [ChTagW-1:0] ch_tag_out;
+  rpu_chord #(.DotW(DotW), .InvW(InvW), .TFrac(TFrac), .ShW(7), .TagW(ChTagW)) u_chord (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .valid_i(s3_valid_q),
+    .dot_i  (s3_dot_q),
+    .inv_m_i(s3_inv_q[InvW-1:0]),
+    .inv_s_i(s3_inv_q[InvW +: 7]),
+    .tag_i  ({s3_tag_q, s3_pr1_q, s3_pr2_q, s3_ctx_q}),
+    .valid_o(ch_valid),
+    .t_o    (ch_t),
+    .ovf_o  (ch_ovf),
+    .tag_o  (ch_tag_out)
+  );
+  wire [TagW-1:0]     ch_tag;
+  wire                ch_pr1, ch_pr2;
+  wire [W02W-1:0]     ch_w02;
+  wire [3*CW-1:0]     ch_p0, ch_p1;
+  wire [3*DW-1:0]     ch_d;
+  wire [3*UW-1:0]     ch_u1, ch_u2;
+  wire [L2W-1:0]      ch_l2;
+  wire [1:0]          ch_mode1, ch_mode2;
+  wire [HW-1:0]       ch_h1, ch_h2;
+  wire [CW-1:0]       ch_a1, ch_a2;
+  wire [TFrac-1:0]    ch_b1, ch_b2;
+  assign {ch_tag, ch_pr1, ch_pr2, ch_w02, ch_p0, ch_p1, ch_d, ch_u1, ch_u2, ch_l2,
+          ch_mode1, ch_h1, ch_a1, ch_b1, ch_mode2, ch_h2, ch_a2, ch_b2} = ch_tag_out;
+
+  // ---------------------------------------------------------------------------------------------
+  // The two guides at t̂; what the curve point and the end need rides in guide 1's tag.
+  // ---------------------------------------------------------------------------------------------
+  localparam integer G1TagW = TagW + 2 + W02W + 6 * CW + 3 * DW + 6 * UW + TW + 1;
+  wire              g1_valid, g2_valid, g1_ovf, g2_ovf;
+  wire [GW-1:0]     g1, g2;
+  wire [TFrac-2:0]  w1, w2;
+  wire [G1TagW-1:0] g1_tag_out;
+  wire              g2_tag_out;
+  rpu_guide #(.CoordW(CW), .TFrac(TFrac), .SqrtW(SqrtW), .TagW(G1TagW)) u_guide1 (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .valid_i(ch_valid),
+    .t_i    (ch_t),
+    .mode_i (ch_mode1),
+    .h_i    (ch_h1),
+    .a_i    (ch_a1),
+    .b_i    (ch_b1),
+    .l2_i   (ch_l2),
+    .tag_i  ({ch_tag, ch_pr1, ch_pr2, ch_w02, ch_p0, ch_p1, ch_d, ch_u1, ch_u2, ch_t, ch_ovf}),
+    .valid_o(g1_valid),
+    .g_o    (g1),
+    .w_o    (w1),
+    .ovf_o  (g1_ovf),
+    .tag_o  (g1_tag_out)
+  );
+  rpu_guide #(.CoordW(CW), .TFrac(TFrac), .SqrtW(SqrtW), .TagW(1)) u_guide2 (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .valid_i(ch_valid),
+    .t_i    (ch_t),
+    .mode_i (ch_mode2),
+    .h_i    (ch_h2),
+    .a_i    (ch_a2),
+    .b_i    (ch_b2),
+    .l2_i   (ch_l2),
+    .tag_i  (1'b0),
+    .valid_o(g2_valid),
+    .g_o    (g2),
+    .w_o    (w2),
+    .ovf_o  (g2_ovf),
+    .tag_o  (g2_tag_out)
+  );
+  wire [TagW-1:0]  gd_tag;
+  wire             gd_pr1, gd_pr2;
+  wire [W02W-1:0]  gd_w02;
+  wire [3*CW-1:0]  gd_p0, gd_p1;
+  wire [3*DW-1:0]  gd_d;
+  wire [3*UW-1:0]  gd_u1, gd_u2;
+  wire [TW-1:0]    gd_t;
+  wire             gd_covf;
+  assign {gd_tag, gd_pr1, gd_pr2, gd_w02, gd_p0, gd_p1, gd_d, gd_u1, gd_u2, gd_t, gd_covf} =
+      g1_tag_out;
+
+  // ---------------------------------------------------------------------------------------------
+  // The curve point X = s(t̂).
+  // ---------------------------------------------------------------------------------------------
+  localparam integer CpTagW = TagW + 2 + W02W + 3 * CW + TW + 1;
+  wire              cp_valid;
+  wire [3*XW-1:0]   cp_x;
+  wire [CpTagW-1:0] cp_tag_out;
+  rpu_curve_point #(.CoordW(CW), .TFrac(TFrac), .UnitFrac(UnitFrac), .TagW(CpTagW)) u_cp (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .valid_i(g1_valid),
+    .p1_i   (gd_p1),
+    .d_i    (gd_d),
+    .u1_i   (gd_u1),
+    .u2_i   (gd_u2),
+    .t_i    (gd_t),
+    .g1_i   (g1),
+    .g2_i   (g2),
+    .tag_i  ({gd_tag, gd_pr1, gd_pr2, gd_w02, gd_p0, gd_t, gd_covf | g1_ovf | g2_ovf}),
+    .valid_o(cp_valid),
+    .x_o    (cp_x),
+    .tag_o  (cp_tag_out)
+  );
+  wire [TagW-1:0]  cp_tag;
+  wire             cp_pr1, cp_pr2;
+  wire [W02W-1:0]  cp_w02;
+  wire [3*CW-1:0]  cp_p0;
+  wire [TW-1:0]    cp_t;
+  wire             cp_ovf;
+  assign {cp_tag, cp_pr1, cp_pr2, cp_w02, cp_p0, cp_t, cp_ovf} = cp_tag_out;
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage E1: e = X − p0 (exact: |X| < 2^(CW+2), |p0| ≤ 2^(CW−1)).
+  // ---------------------------------------------------------------------------------------------
+  // The result fields that ride to the end: {tag, pr1, pr2, w0_2, t̂, X, ovf}.
+  localparam integer ResW = TagW + 2 + W02W + TW + 3 * XW + 1;
+  reg [3*EW-1:0]   e1_e_q;
+  reg [ResW-1:0]   e1_res_q;
+  reg              e1_valid_q;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_e
+      wire [XW-1:0] xk = cp_x[c*XW +: XW];
+      wire [CW-1:0] pk = cp_p0[c*CW +: CW];
+      always @(posedge clk_i)
+        e1_e_q[c*EW +: EW] <= {{(EW-XW){xk[XW-1]}}, xk} - {{(EW-CW){pk[CW-1]}}, pk};
+    end
+  endgenerate
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) e1_valid_q <= 1'b0;
+    else         e1_valid_q <= cp_valid;
+  end
+  always @(posedge clk_i) e1_res_q <= {cp_tag, cp_pr1, cp_pr2, cp_w02, cp_t, cp_x, cp_ovf};
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage E2: e_k² (exact).
+  // ---------------------------------------------------------------------------------------------
+  reg [3*EPW-1:0]  e2_sq_q;
+  reg [ResW-1:0]   e2_res_q;
+  reg              e2_valid_q;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_sq
+      wire [EW-1:0] ek = e1_e_q[c*EW +: EW];
+      wire signed [EPW-1:0] sq = $signed({{EW{ek[EW-1]}}, ek}) * $signed({{EW{ek[EW-1]}}, ek});
+      always @(posedge clk_i) e2_sq_q[c*EPW +: EPW] <= sq;
+    end
+  endgenerate
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) e2_valid_q <= 1'b0;
+    else         e2_valid_q <= e1_valid_q;
+  end
+  always @(posedge clk_i) e2_res_q <= e1_res_q;
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage E3: pr3 = |e|² ≤ w0_2 (exact), covers; the outputs.
+  // ---------------------------------------------------------------------------------------------
+  wire [TagW-1:0]  r_tag;
+  wire             r_pr1, r_pr2;
+  wire [W02W-1:0]  r_w02;
+  wire [TW-1:0]    r_t;
+  wire [3*XW-1:0]  r_x;
+  wire             r_ovf;
+  assign {r_tag, r_pr1, r_pr2, r_w02, r_t, r_x, r_ovf} = e2_res_q;
+  wire signed [ESW-1:0] m3 = {{(ESW-W02W){1'b0}}, r_w02} -
+                             {2'b00, e2_sq_q[0*EPW +: EPW]} -
+                             {2'b00, e2_sq_q[1*EPW +: EPW]} -
+                             {2'b00, e2_sq_q[2*EPW +: EPW]};
+  wire pr3 = ~m3[ESW-1];
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else         valid_o <= e2_valid_q;
+  end
+  always @(posedge clk_i) begin
+    pr1_o    <= r_pr1;
+    pr2_o    <= r_pr2;
+    pr3_o    <= pr3;
+    covers_o <= r_pr1 & (r_pr2 | pr3);
+    t_o      <= r_t;
+    x_o      <= r_x;
+    ovf_o    <= r_ovf;
+    tag_o    <= r_tag;
+  end
+
+  wire unused_bits = ^{g2_valid, w1, w2, g2_tag_out};
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,270 @@
+// rpu_top: the ray-processing unit for curves. Twin: rpu::ref::process_curve_pair per work item.
+//   descriptors: the camera (cam_we_i) and up to 2^SegAddrW segment descriptors (seg_we_i) are
+//     written before a frame (formats: docs/fixed-point.md, packing: docs/rtl.md);
+//   work items: (id, pixel i, j, segment) on a valid/ready stream, one per cycle;
+//   results: (id, i, j, segment, primitive, pred_1, hit, depth, τ_K, t, X, overflow) on a
+//     valid/ready stream, in input order.
+// Inside: segment RAM read → rpu_ray_gen → rpu_sphere → rpu_ip → rpu_capture → output FIFO.
+// The arithmetic pipeline never stalls: a work item is only accepted while fewer than
+// 2^FifoLog2 items are in flight or waiting in the output FIFO (a credit count of registers),
+// so the FIFO cannot overflow and no combinational ready path crosses the pipeline.
+`default_nettype none
+
+module rpu_top #(
+  parameter integer CoordW   = 24,  // position width (12..40)
+  parameter integer DirFrac  = 24,  // ray direction fraction bits (8..40)
+  parameter integer TFrac    = 24,  // chord parameter fraction bits (8..48)
+  parameter integer UnitFrac = 16,  // guide direction fraction bits (8..40)
+  parameter integer EdgeFrac = 16,  // PVP edge vector fraction bits (8..40)
+  parameter integer InvW     = 18,  // 1/L² mantissa bits (8..40)
+  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
+  parameter integer N        = 16,  // result bits of τ (1..40)
+  parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
+  parameter integer Metric   = 0,   // 0: |pr − X| (seed), 1: |pr − X|²
+  parameter integer Unrolled = 1,   // 1: K step units (one item per cycle), 0: one reused K times
+  parameter integer SegAddrW = 12,  // log2 of the segment descriptor capacity (1..16)
+  parameter integer IdxW     = 14,  // pixel index width (1..14)
+  parameter integer IdW      = 32,  // width of the caller's work-item id (1..64)
+  parameter integer PrimW    = 16,  // primitive id width (1..32)
+  parameter integer FifoLog2 = 10,  // log2 of the items in flight + waiting (2..12)
+  // Derived (do not override).
+  parameter integer VgW   = 4 + DirFrac + 14,
+  parameter integer EgW   = 4 + EdgeFrac + 14,
+  parameter integer DW    = CoordW + 1,
+  parameter integer TW    = TFrac + 3,
+  parameter integer UW    = UnitFrac + 2,
+  parameter integer HW    = CoordW + 5,
+  parameter integer L2W   = 2 * CoordW + 3,
+  parameter integer R2W   = 2 * CoordW + 1,
+  parameter integer XW    = CoordW + 3,
+  parameter integer GdW   = 2 + HW + CoordW + TFrac + 3*UW,           // one guide descriptor
+  parameter integer CamW  = 9*VgW + 12*EgW + 3*CoordW,                 // camera descriptor
+  parameter integer SegW  = PrimW + 3*CoordW + 3*DW + 3*CoordW + R2W + L2W + InvW + 7 + 2*GdW,
+  parameter integer DepthW = CoordW + 4 + EgW + 2
+) (
+  input  wire                clk_i,
+  input  wire                rst_ni,
+  // Descriptor load.
+  input  wire                cam_we_i,
+  input  wire [CamW-1:0]     cam_data_i,   // {v0, dx, dy, el0, et0, sw, w, eye}
+  input  wire                seg_we_i,
+  input  wire [SegAddrW-1:0] seg_addr_i,
+  input  wire [SegW-1:0]     seg_data_i,   // {prim, p1, d, c0, R2, L2, inv_m, inv_s, g1, g2}
+  // Work items.
+  input  wire                item_valid_i,
+  output wire                item_ready_o,
+  input  wire [IdW-1:0]      item_id_i,
+  input  wire [IdxW-1:0]     item_i_i,
+  input  wire [IdxW-1:0]     item_j_i,
+  input  wire [SegAddrW-1:0] item_seg_i,
+  // Results.
+  output wire                res_valid_o,
+  input  wire                res_ready_i,
+  output wire [IdW-1:0]      res_id_o,
+  output wire [IdxW-1:0]     res_i_o,
+  output wire [IdxW-1:0]     res_j_o,
+  output wire [SegAddrW-1:0] res_seg_o,
+  output wire [PrimW-1:0]    res_prim_o,
+  output wire                res_pred1_o,
+  output wire                res_hit_o,
+  output wire [DepthW-1:0]   res_depth_o,
+  output wire [N-1:0]        res_tau_o,
+  output wire [TW-1:0]       res_t_o,
+  output wire [3*XW-1:0]     res_x_o,
+  output wire                res_ovf_o
+);
+  localparam integer EoW  = EgW + IdxW + 1;   // rpu_ray_gen's edge outputs
+  localparam integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8;
+  localparam integer StW  = N + TW + 3*XW + 2*MdW;
+  localparam integer ItW  = IdW + 2*IdxW + SegAddrW;  // the work item's own fields
+  localparam integer EdgW = 12 * EgW;                 // four edge vectors, Q(4.FE+14)
+
+  initial begin
+    if (SegAddrW < 1 || SegAddrW > 16) $fatal(1, "rpu_top: SegAddrW must be in 1..16");
+    if (IdxW < 1 || IdxW > 14) $fatal(1, "rpu_top: IdxW must be in 1..14");
+    if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_top: FifoLog2 must be in 2..12");
+  end
+
+  // ---- descriptor storage ----
+  reg [CamW-1:0] cam_q;
+  reg [SegW-1:0] seg_mem [0:(1<<SegAddrW)-1];
+  always @(posedge clk_i) begin
+    if (cam_we_i) cam_q <= cam_data_i;
+    if (seg_we_i) seg_mem[seg_addr_i] <= seg_data_i;
+  end
+  wire [3*VgW-1:0]   cam_v0  = cam_q[CamW-1 -: 3*VgW];
+  wire [3*VgW-1:0]   cam_dx  = cam_q[CamW-3*VgW-1 -: 3*VgW];
+  wire [3*VgW-1:0]   cam_dy  = cam_q[CamW-6*VgW-1 -: 3*VgW];
+  wire [3*EgW-1:0]   cam_el0 = cam_q[CamW-9*VgW-1 -: 3*EgW];
+  wire [3*EgW-1:0]   cam_et0 = cam_q[CamW-9*VgW-3*EgW-1 -: 3*EgW];
+  wire [3*EgW-1:0]   cam_sw  = cam_q[CamW-9*VgW-6*EgW-1 -: 3*EgW];
+  wire [3*EgW-1:0]   cam_w   = cam_q[CamW-9*VgW-9*EgW-1 -: 3*EgW];
+  wire [3*CoordW-1:0] cam_eye = cam_q[3*CoordW-1:0];
+
+  // ---- admission: credits for every item in flight or waiting in the output FIFO ----
+  localparam integer Depth = 1 << FifoLog2;
+  reg  [FifoLog2:0] used_q;
+  wire              accept = item_valid_i && item_ready_o;
+  wire              pop    = res_valid_o && res_ready_i;
+  assign item_ready_o = used_q < Depth[FifoLog2:0];
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) used_q <= {(FifoLog2+1){1'b0}};
+    else         used_q <= used_q + {{FifoLog2{1'b0}}, accept} - {{FifoLog2{1'b0}}, pop};
+  end
+
+  // ---- stage 0: read the segment descriptor ----
+  reg             v0_q;
+  reg [ItW-1:0]   item_q;
+  reg [SegW-1:0]  seg_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) v0_q <= 1'b0;
+    else         v0_q <= accept;
+  end
+  always @(posedge clk_i) begin
+    item_q <= {item_id_i, item_i_i, item_j_i, item_seg_i};
+    seg_q  <= seg_mem[item_seg_i];
+  end
+
+  // ---- ray generator; the item and its descriptor ride along ----
+  wire [IdxW-1:0] it_i = item_q[2*IdxW+SegAddrW-1 -: IdxW];
+  wire [IdxW-1:0] it_j = item_q[IdxW+SegAddrW-1 -: IdxW];
+  wire            rg_valid;
+  wire [3*(4+DirFrac)-1:0] rg_v_unused;
+  wire [3*(2+DirFrac)-1:0] rg_vhat;
+  wire [3*EoW-1:0] rg_el, rg_er, rg_et, rg_eb;
+  wire [ItW+SegW-1:0] rg_tag;
+  rpu_ray_gen #(.DirFrac(DirFrac), .EdgeFrac(EdgeFrac), .IdxW(IdxW), .TagW(ItW + SegW)) u_ray (
+    .clk_i, .rst_ni, .valid_i(v0_q), .i_i(it_i), .j_i(it_j), .v0_i(cam_v0), .dx_i(cam_dx),
+    .dy_i(cam_dy), .el0_i(cam_el0), .et0_i(cam_et0), .sw_i(cam_sw), .tag_i({item_q, seg_q}),
+    .valid_o(rg_valid), .v_o(rg_v_unused), .vhat_o(rg_vhat), .e_left_o(rg_el),
+    .e_right_o(rg_er), .e_top_o(rg_et), .e_bottom_o(rg_eb), .tag_o(rg_tag));
+
+  // Edge vectors: the compiler guarantees every pixel's fit Q(4.FE+14) (EgW bits), so the
+  // generator's wider outputs are narrowed losslessly.
+  wire [EdgW-1:0] rg_edges;
+  genvar c;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_narrow
+      assign rg_edges[9*EgW + c*EgW +: EgW] = rg_el[c*EoW +: EgW];
+      assign rg_edges[6*EgW + c*EgW +: EgW] = rg_er[c*EoW +: EgW];
+      assign rg_edges[3*EgW + c*EgW +: EgW] = rg_et[c*EoW +: EgW];
+      assign rg_edges[c*EgW +: EgW]         = rg_eb[c*EoW +: EgW];
+      wire unused_high = ^{rg_el[c*EoW+EgW +: EoW-EgW], rg_er[c*EoW+EgW +: EoW-EgW],
+                           rg_et[c*EoW+EgW +: EoW-EgW], rg_eb[c*EoW+EgW +: EoW-EgW]};
+    end
+  endgenerate
+
+  // Segment descriptor fields.
+  wire [SegW-1:0]     sd    = rg_tag[SegW-1:0];
+  wire [ItW-1:0]      rg_it = rg_tag[ItW+SegW-1 -: ItW];
+  wire [PrimW-1:0]    sd_prim = sd[SegW-1 -: PrimW];
+  wire [3*CoordW-1:0] sd_p1   = sd[SegW-PrimW-1 -: 3*CoordW];
+  wire [3*DW-1:0]     sd_d    = sd[SegW-PrimW-3*CoordW-1 -: 3*DW];
+  wire [3*CoordW-1:0] sd_c0   = sd[SegW-PrimW-3*CoordW-3*DW-1 -: 3*CoordW];
+  wire [R2W-1:0]      sd_r2   = sd[SegW-PrimW-6*CoordW-3*DW-1 -: R2W];
+  wire [L2W-1:0]      sd_l2   = sd[SegW-PrimW-6*CoordW-3*DW-R2W-1 -: L2W];
+  wire [InvW-1:0]     sd_invm = sd[SegW-PrimW-6*CoordW-3*DW-R2W-L2W-1 -: InvW];
+  wire [6:0]          sd_invs = sd[2*GdW+6 -: 7];
+  wire [2*GdW-1:0]    sd_g    = sd[2*GdW-1:0];
+
+  // ---- sphere unit ----
+  localparam integer SphTagW = ItW + PrimW + 3*CoordW + 3*DW + L2W + 2*GdW + EdgW;
+  wire             sp_valid, sp_pred1, sp_ovf;
+  wire [CoordW+3:0] sp_tc_unused;
+  wire [CoordW+2:0] sp_hc_unused;
+  wire [3*CoordW-1:0] sp_a, sp_b_unused;
+  wire [3*DW-1:0]  sp_ab;
+  wire [TW-1:0]    sp_alpha, sp_beta;
+  wire [SphTagW-1:0] sp_tag;
+  rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
+               .TagW(SphTagW)) u_sphere (
+    .clk_i, .rst_ni, .valid_i(rg_valid), .eye_i(cam_eye), .vhat_i(rg_vhat), .c0_i(sd_c0),
+    .r2_i(sd_r2), .p1_i(sd_p1), .d_i(sd_d), .inv_m_i(sd_invm), .inv_s_i(sd_invs),
+    .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_g, rg_edges}),
+    .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
+    .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
+    .ovf_o(sp_ovf), .tag_o(sp_tag));
+  wire [ItW-1:0]      s_it    = sp_tag[SphTagW-1 -: ItW];
+  wire [PrimW-1:0]    s_prim  = sp_tag[SphTagW-ItW-1 -: PrimW];
+  wire [3*CoordW-1:0] s_p1    = sp_tag[SphTagW-ItW-PrimW-1 -: 3*CoordW];
+  wire [3*DW-1:0]     s_d     = sp_tag[SphTagW-ItW-PrimW-3*CoordW-1 -: 3*DW];
+  wire [L2W-1:0]      s_l2    = sp_tag[SphTagW-ItW-PrimW-3*CoordW-3*DW-1 -: L2W];
+  wire [GdW-1:0]      s_g1    = sp_tag[EdgW+2*GdW-1 -: GdW];
+  wire [GdW-1:0]      s_g2    = sp_tag[EdgW+GdW-1 -: GdW];
+  wire [EdgW-1:0]     s_edges = sp_tag[EdgW-1:0];
+
+  // ---- the K-step process ----
+  localparam integer IpCtxW = ItW + PrimW + 2 + EdgW;
+  wire             ip_ready_unused, ip_valid, ip_ovf;
+  wire [StW-1:0]   ip_state;
+  wire [IpCtxW-1:0] ip_ctx;
+  rpu_ip #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N), .N1(N1),
+           .Metric(Metric), .Unrolled(Unrolled), .FifoLog2(FifoLog2), .CtxW(IpCtxW)) u_ip (
+    .clk_i, .rst_ni, .valid_i(sp_valid), .ready_o(ip_ready_unused), .a_i(sp_a), .ab_i(sp_ab),
+    .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(s_p1), .d_i(s_d), .l2_i(s_l2),
+    .mode1_i(s_g1[GdW-1 -: 2]), .h1_i(s_g1[GdW-3 -: HW]), .a1_i(s_g1[GdW-HW-3 -: CoordW]),
+    .b1_i(s_g1[3*UW+TFrac-1 -: TFrac]), .u1_i(s_g1[3*UW-1:0]),
+    .mode2_i(s_g2[GdW-1 -: 2]), .h2_i(s_g2[GdW-3 -: HW]), .a2_i(s_g2[GdW-HW-3 -: CoordW]),
+    .b2_i(s_g2[3*UW+TFrac-1 -: TFrac]), .u2_i(s_g2[3*UW-1:0]),
+    .ctx_i({s_it, s_prim, sp_pred1, sp_ovf, s_edges}),
+    .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
+  // The credit count keeps rpu_ip's own start FIFO (same depth) from ever filling: ready is 1.
+  wire unused_md = ^ip_state[2*MdW-1:0];
+  wire unused_ip = ^{ip_ready_unused, sp_tc_unused, sp_hc_unused, sp_b_unused, rg_v_unused};
+
+  wire [ItW-1:0]   i_it    = ip_ctx[IpCtxW-1 -: ItW];
+  wire [PrimW-1:0] i_prim  = ip_ctx[IpCtxW-ItW-1 -: PrimW];
+  wire             i_pred1 = ip_ctx[EdgW+1];
+  wire             i_sovf  = ip_ctx[EdgW];
+  wire [EdgW-1:0]  i_edges = ip_ctx[EdgW-1:0];
+  wire [N-1:0]     i_tau   = ip_state[StW-1 -: N];
+  wire [TW-1:0]    i_t     = ip_state[StW-N-1 -: TW];
+  wire [3*XW-1:0]  i_x     = ip_state[StW-N-TW-1 -: 3*XW];
+  // As the model: without pred_1 the pair is background and τ, t, X are zero; overflow counts
+  // the sphere unit always and the IP only for pairs that ran it.
+  wire             r_ovf   = i_sovf | (i_pred1 & ip_ovf);
+  wire [N-1:0]     r_tau   = i_pred1 ? i_tau : {N{1'b0}};
+  wire [TW-1:0]    r_t     = i_pred1 ? i_t : {TW{1'b0}};
+  wire [3*XW-1:0]  r_x     = i_pred1 ? i_x : {3*XW{1'b0}};
+
+  // ---- capture ----
+  localparam integer CapTagW = ItW + PrimW + 2 + N + TW + 3*XW;
+  wire              cp_valid, cp_hit, cp_tok_unused;
+  wire [3:0]        cp_signs_unused;
+  wire [DepthW-1:0] cp_depth;
+  wire [CapTagW-1:0] cp_tag;
+  rpu_capture #(.CoordW(CoordW), .TFrac(TFrac), .EdgeFrac(EdgeFrac), .TagW(CapTagW)) u_capture (
+    .clk_i, .rst_ni, .valid_i(ip_valid), .x_i(r_x), .t_i(r_t), .eye_i(cam_eye),
+    .e_left_i(i_edges[EdgW-1 -: 3*EgW]), .e_right_i(i_edges[9*EgW-1 -: 3*EgW]),
+    .e_top_i(i_edges[6*EgW-1 -: 3*EgW]), .e_bottom_i(i_edges[3*EgW-1:0]), .w_i(cam_w),
+    .tag_i({i_it, i_prim, i_pred1, r_ovf, r_tau, r_t, r_x}),
+    .valid_o(cp_valid), .hit_o(cp_hit), .t_in_range_o(cp_tok_unused), .signs_o(cp_signs_unused),
+    .depth_o(cp_depth), .tag_o(cp_tag));
+  wire unused_cp = ^{cp_tok_unused, cp_signs_unused};
+  wire c_pred1 = cp_tag[CapTagW-ItW-PrimW-1];
+
+  // ---- output FIFO ----
+  localparam integer ResW = CapTagW + 1 + DepthW;
+  reg [ResW-1:0]    fifo_q [0:Depth-1];
+  reg [FifoLog2:0]  wr_q, rd_q;
+  wire [ResW-1:0]   res_in = {cp_tag, c_pred1 & cp_hit,
+                              c_pred1 ? cp_depth : {DepthW{1'b0}}};
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      wr_q <= {(FifoLog2+1){1'b0}};
+      rd_q <= {(FifoLog2+1){1'b0}};
+    end else begin
+      if (cp_valid) wr_q <= wr_q + 1'b1;
+      if (pop)      rd_q <= rd_q + 1'b1;
+    end
+  end
+  always @(posedge clk_i) begin
+    if (cp_valid) fifo_q[wr_q[FifoLog2-1:0]] <= res_in;
+  end
+  wire [ResW-1:0] head = fifo_q[rd_q[FifoLog2-1:0]];
+  assign res_valid_o = wr_q != rd_q;
+  assign {res_id_o, res_i_o, res_j_o, res_seg_o, res_prim_o, res_pred1_o, res_ovf_o, res_tau_o,
+          res_t_o, res_x_o, res_hit_o, res_depth_o} = head;
+endmodule
+
+`default_nettype wire
