@@ -7,8 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DRPU_SANITIZE=ON -DRPU_BENCH=OFF >/dev/null
-# With RPU_BENCH=OFF the default target is exactly rpu, its library and the test executables.
+      -DRPU_SANITIZE=ON -DRPU_BENCH=OFF -DRPU_SIM=OFF >/dev/null
+# With RPU_BENCH=OFF and RPU_SIM=OFF the default target is exactly rpu, its library and the
+# C++ test executables (the verilated testbenches run in the main build).
 cmake --build build-asan -j"$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
