@@ -1,6 +1,5 @@
 // rpu_candidate against rpu::ref::candidate_evaluator: real search intervals of curve12 (every
 // segment, pixels around its projection), random and edge τ indices, random valid gaps.
-#include <algorithm>
 #include <deque>
 #include <memory>
 
@@ -8,7 +7,7 @@
 #include "model/units.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"
-#include "tb_common.h"
+#include "tb_ip_common.h"
 
 #ifndef METRIC
 #define METRIC 0
@@ -41,29 +40,20 @@ int main(int argc, char** argv) {
   ref::HwParams p;
   p.metric = METRIC == 0 ? ref::Metric::kAbs : ref::Metric::kSquared;
   const ref::ModelScene m = ref::quantize_scene(sc, p);
-  const int CW = p.coord_w, DW = CW + 1, TW = p.t_w(), UW = p.unit_w();
+  const int CW = p.coord_w, TW = p.t_w();
   const long count = sim::vector_count(100000);
 
   std::deque<Item> items;
   while (static_cast<long>(items.size()) < count) {
-    const size_t k = rng() % m.curve_segments.size();
-    const ref::SegmentDesc& s = m.curve_segments[k];
-    int ci, cj;
-    const Vec3 world = scene::curve_point(sc.curve_segments[k].geom,
-                                          std::uniform_real_distribution<double>(0, 1)(rng));
-    if (!scene::project_to_pixel(sc.camera, world, ci, cj)) continue;
-    ci = std::clamp(ci + static_cast<int>(rng() % 5) - 2, 0, m.camera.width - 1);
-    cj = std::clamp(cj + static_cast<int>(rng() % 5) - 2, 0, m.camera.height - 1);
-    const ref::RayGenOut ray = ref::ray_generator(p, m.camera, ci, cj);
-    fixed::Overflow o;
-    const ref::SearchInterval si = ref::sphere_unit(p, m.camera.eye, ray.vhat, s, o);
-    if (!si.pred1) continue;
+    sim::SampledPair pair;
+    if (!sim::sample_pred1_pair(sc, m, p, rng, pair)) continue;
+    const ref::SegmentDesc& s = m.curve_segments[pair.seg];
     for (int r = 0; r < 8; ++r) {
       const std::uint64_t full = std::uint64_t{1} << p.n;
       const std::uint64_t edges[] = {0, full, 1, full - 1, full / 2};
       const std::uint64_t mm = r < 2 ? edges[rng() % 5] : rng() % (full + 1);
       fixed::Overflow ovf;
-      Item it{k, si, mm, ref::candidate_evaluator(p, s, si, mm, ovf), false};
+      Item it{pair.seg, pair.si, mm, ref::candidate_evaluator(p, s, pair.si, mm, ovf), false};
       it.ovf = ovf.flag;
       items.push_back(it);
     }
@@ -78,27 +68,8 @@ int main(int argc, char** argv) {
     top->valid_i = issue;
     if (issue) {
       const Item& it = items.front();
-      const ref::SegmentDesc& s = m.curve_segments[it.seg];
       sim::put(top->m_i, static_cast<i128>(it.m), p.n + 1);
-      sim::put_vec3(top->a_i, it.si.A.x, it.si.A.y, it.si.A.z, CW);
-      sim::put_vec3(top->ab_i, it.si.AB.x, it.si.AB.y, it.si.AB.z, DW);
-      sim::put(top->alpha_i, it.si.alpha, TW);
-      sim::put(top->beta_i, it.si.beta, TW);
-      sim::put_vec3(top->p1_i, s.p1.x, s.p1.y, s.p1.z, CW);
-      sim::put_vec3(top->d_i, s.d.x, s.d.y, s.d.z, DW);
-      sim::put(top->l2_i, s.L2, 2 * CW + 3);
-      const ref::GuideDesc& g1 = s.guide[0];
-      const ref::GuideDesc& g2 = s.guide[1];
-      top->mode1_i = static_cast<unsigned>(g1.mode);
-      sim::put(top->h1_i, g1.h, CW + 5);
-      sim::put(top->a1_i, g1.a, CW);
-      sim::put(top->b1_i, g1.b, p.t_frac);
-      sim::put_vec3(top->u1_i, g1.u.x, g1.u.y, g1.u.z, UW);
-      top->mode2_i = static_cast<unsigned>(g2.mode);
-      sim::put(top->h2_i, g2.h, CW + 5);
-      sim::put(top->a2_i, g2.a, CW);
-      sim::put(top->b2_i, g2.b, p.t_frac);
-      sim::put_vec3(top->u2_i, g2.u.x, g2.u.y, g2.u.z, UW);
+      sim::drive_pair(*top, p, m.curve_segments[it.seg], it.si);
       top->tag_i = static_cast<unsigned>(pending.size() & 1);
       pending.push_back(it);
       items.pop_front();

@@ -1,14 +1,19 @@
-// rpu_ip (unrolled or iterative) against rpu::ref::ip_process: real search intervals of curve12,
-// random valid gaps, ready_o honoured; every state field compared: τ_K, lo.t, lo.X, lo.md, hi.md.
-#include <algorithm>
+// rpu_ip (unrolled or iterative) against rpu::ref::ip_process, and with -DIP_STEP rpu_ip_step
+// (k at run time) against rpu::ref::ip_step on the model's intermediate states of every k. Real
+// search intervals of curve12, random valid gaps, ready_o honoured (rpu_ip); every state field is
+// compared: τ, lo.t, lo.X, lo.md, hi.md, the overflow bit and the passed-through context.
 #include <deque>
 #include <memory>
 
+#ifdef IP_STEP
+#include "Vrpu_ip_step.h"
+using Dut = Vrpu_ip_step;
+#else
 #include "Vrpu_ip.h"
-#include "model/units.h"
-#include "scene/compiled_scene.h"
+using Dut = Vrpu_ip;
+#endif
 #include "scene/scene_json.h"
-#include "tb_common.h"
+#include "tb_ip_common.h"
 
 #ifndef IP_N
 #define IP_N 16
@@ -31,18 +36,25 @@ using sim::i128;
 struct Item {
   size_t seg;
   ref::SearchInterval si;
-  ref::IpState want;
+  ref::IpState in;    // the state entering the step (IP_STEP only)
+  ref::IpState want;  // the state leaving the step or the process
   bool ovf;
   std::uint32_t id;
 };
+
+#ifdef IP_STEP
+constexpr const char* kName = "rpu_ip_step";
+#else
+constexpr const char* kName = "rpu_ip";
+#endif
 
 }  // namespace
 
 int main(int argc, char** argv) {
   auto ctx = std::make_unique<VerilatedContext>();
   ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_ip>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_ip");
+  auto top = std::make_unique<Dut>(ctx.get());
+  const std::uint64_t seed = sim::test_seed(kName);
   std::mt19937_64 rng(seed);
 
   const scene::CompiledScene sc = scene::compile_scene(
@@ -53,60 +65,49 @@ int main(int argc, char** argv) {
   p.metric = METRIC == 0 ? ref::Metric::kAbs : ref::Metric::kSquared;
   p.unrolled = UNROLLED != 0;
   const ref::ModelScene m = ref::quantize_scene(sc, p);
-  const int CW = p.coord_w, DW = CW + 1, TW = p.t_w(), UW = p.unit_w(), XW = CW + 3;
-  const int MdW = METRIC == 0 ? CW + 4 : 2 * CW + 8;
   const long count = sim::vector_count(UNROLLED ? 20000 : 4000);
 
   std::deque<Item> items;
   std::uint32_t id = 0;
   while (static_cast<long>(items.size()) < count) {
-    const size_t k = rng() % m.curve_segments.size();
-    const ref::SegmentDesc& s = m.curve_segments[k];
-    int ci, cj;
-    const Vec3 world = scene::curve_point(sc.curve_segments[k].geom,
-                                          std::uniform_real_distribution<double>(0, 1)(rng));
-    if (!scene::project_to_pixel(sc.camera, world, ci, cj)) continue;
-    ci = std::clamp(ci + static_cast<int>(rng() % 5) - 2, 0, m.camera.width - 1);
-    cj = std::clamp(cj + static_cast<int>(rng() % 5) - 2, 0, m.camera.height - 1);
-    const ref::RayGenOut ray = ref::ray_generator(p, m.camera, ci, cj);
-    fixed::Overflow o;
-    const ref::SearchInterval si = ref::sphere_unit(p, m.camera.eye, ray.vhat, s, o);
-    if (!si.pred1) continue;
+    sim::SampledPair pair;
+    if (!sim::sample_pred1_pair(sc, m, p, rng, pair)) continue;
+    const ref::SegmentDesc& s = m.curve_segments[pair.seg];
+#ifdef IP_STEP
+    fixed::Overflow o0;
+    ref::IpState st = ref::ip_start(p, s, pair.si, o0);
+    for (int step = 1; step <= p.K(); ++step) {
+      fixed::Overflow ovf;
+      const ref::IpState next = ref::ip_step(p, s, pair.si, st, ovf);
+      if (rng() % 2 == 0 || step == p.K()) items.push_back({pair.seg, pair.si, st, next, ovf.flag, id++});
+      st = next;
+    }
+#else
     fixed::Overflow ovf;
-    const ref::IpState st = ref::ip_process(p, s, si, ovf);
-    items.push_back({k, si, st, ovf.flag, id++});
+    items.push_back({pair.seg, pair.si, {}, ref::ip_process(p, s, pair.si, ovf), ovf.flag, id++});
+#endif
   }
 
   sim::reset(*top, *ctx);
   std::deque<Item> pending;
   long matched = 0, cycle = 0;
   const long total = static_cast<long>(items.size());
-  const int CtxW = 32;
   while (matched < total) {
-    const bool want_issue = !items.empty() && (rng() % 100) < 85;
+    const bool issue = !items.empty() && (rng() % 100) < 85;
+#ifdef IP_STEP
+    const bool ready = true;
+#else
     const bool ready = top->ready_o;  // sampled before the edge, as the hardware does
-    top->valid_i = want_issue;
-    if (want_issue) {
+#endif
+    top->valid_i = issue;
+    if (issue) {
       const Item& it = items.front();
-      const ref::SegmentDesc& s = m.curve_segments[it.seg];
-      sim::put_vec3(top->a_i, it.si.A.x, it.si.A.y, it.si.A.z, CW);
-      sim::put_vec3(top->ab_i, it.si.AB.x, it.si.AB.y, it.si.AB.z, DW);
-      sim::put(top->alpha_i, it.si.alpha, TW);
-      sim::put(top->beta_i, it.si.beta, TW);
-      sim::put_vec3(top->p1_i, s.p1.x, s.p1.y, s.p1.z, CW);
-      sim::put_vec3(top->d_i, s.d.x, s.d.y, s.d.z, DW);
-      sim::put(top->l2_i, s.L2, 2 * CW + 3);
-      top->mode1_i = static_cast<unsigned>(s.guide[0].mode);
-      sim::put(top->h1_i, s.guide[0].h, CW + 5);
-      sim::put(top->a1_i, s.guide[0].a, CW);
-      sim::put(top->b1_i, s.guide[0].b, p.t_frac);
-      sim::put_vec3(top->u1_i, s.guide[0].u.x, s.guide[0].u.y, s.guide[0].u.z, UW);
-      top->mode2_i = static_cast<unsigned>(s.guide[1].mode);
-      sim::put(top->h2_i, s.guide[1].h, CW + 5);
-      sim::put(top->a2_i, s.guide[1].a, CW);
-      sim::put(top->b2_i, s.guide[1].b, p.t_frac);
-      sim::put_vec3(top->u2_i, s.guide[1].u.x, s.guide[1].u.y, s.guide[1].u.z, UW);
-      sim::put(top->ctx_i, it.id, CtxW);
+      sim::drive_pair(*top, p, m.curve_segments[it.seg], it.si);
+      sim::put(top->ctx_i, it.id, 32);
+#ifdef IP_STEP
+      top->k_i = static_cast<unsigned>(it.in.k + 1);
+      sim::write_state(top->state_i, p, it.in);
+#endif
       if (ready) {
         pending.push_back(it);
         items.pop_front();
@@ -121,39 +122,12 @@ int main(int argc, char** argv) {
       }
       const Item it = pending.front();
       pending.pop_front();
-      const int StW = p.n + TW + 3 * XW + 2 * MdW;
-      const auto field = [&](int hi_bit, int width) {
-        // state_o packs {tau, lo.t, lo.X, lo.md, hi.md}; read `width` bits below hi_bit.
-        fixed::u128 u = 0;
-        for (int b = 0; b < width; ++b) {
-          const int bit = hi_bit - width + 1 + b;
-          const bool v = (top->state_o[static_cast<size_t>(bit / 32)] >> (bit % 32)) & 1;
-          if (v) u |= fixed::u128{1} << b;
-        }
-        return u;
-      };
-      const auto sext = [](fixed::u128 u, int w) {
-        const fixed::u128 sign = fixed::u128{1} << (w - 1);
-        return static_cast<i128>((u ^ sign) - sign);
-      };
-      int at = StW - 1;
-      const i128 tau = static_cast<i128>(field(at, p.n));
-      at -= p.n;
-      const i128 lo_t = sext(field(at, TW), TW);
-      at -= TW;
-      i128 x[3];
-      for (int c = 2; c >= 0; --c) {  // {z, y, x}
-        x[c] = sext(field(at, XW), XW);
-        at -= XW;
-      }
-      const i128 lo_md = static_cast<i128>(field(at, MdW));
-      at -= MdW;
-      const i128 hi_md = static_cast<i128>(field(at, MdW));
+      const sim::IpStateFields f = sim::read_state(top->state_o, p);
       const ref::IpState& w = it.want;
       const std::uint32_t got_id = static_cast<std::uint32_t>(top->ctx_o);
-      const bool ok = tau == static_cast<i128>(w.tau) && lo_t == w.lo.t && x[0] == w.lo.X.x &&
-                      x[1] == w.lo.X.y && x[2] == w.lo.X.z && lo_md == w.lo.md &&
-                      hi_md == w.hi.md && static_cast<bool>(top->ovf_o) == it.ovf &&
+      const bool ok = f.tau == static_cast<i128>(w.tau) && f.lo_t == w.lo.t && f.x[0] == w.lo.X.x &&
+                      f.x[1] == w.lo.X.y && f.x[2] == w.lo.X.z && f.lo_md == w.lo.md &&
+                      f.hi_md == w.hi.md && static_cast<bool>(top->ovf_o) == it.ovf &&
                       got_id == it.id;
       if (!ok) {
         std::printf("FAILURE cycle %ld item %ld (id %u, got id %u): segment %zu alpha %s beta %s\n"
@@ -164,10 +138,10 @@ int main(int argc, char** argv) {
                     sim::to_string(w.lo.t).c_str(), sim::to_string(w.lo.X.x).c_str(),
                     sim::to_string(w.lo.X.y).c_str(), sim::to_string(w.lo.X.z).c_str(),
                     sim::to_string(w.lo.md).c_str(), sim::to_string(w.hi.md).c_str(), it.ovf,
-                    sim::to_string(tau).c_str(), sim::to_string(lo_t).c_str(),
-                    sim::to_string(x[0]).c_str(), sim::to_string(x[1]).c_str(),
-                    sim::to_string(x[2]).c_str(), sim::to_string(lo_md).c_str(),
-                    sim::to_string(hi_md).c_str(), top->ovf_o);
+                    sim::to_string(f.tau).c_str(), sim::to_string(f.lo_t).c_str(),
+                    sim::to_string(f.x[0]).c_str(), sim::to_string(f.x[1]).c_str(),
+                    sim::to_string(f.x[2]).c_str(), sim::to_string(f.lo_md).c_str(),
+                    sim::to_string(f.hi_md).c_str(), top->ovf_o);
         return 1;
       }
       ++matched;
@@ -178,8 +152,8 @@ int main(int argc, char** argv) {
     }
   }
   top->final();
-  std::printf("rpu_ip n=%d n1=%d metric %d %s: matched %ld items in %ld cycles (%.3f items/cycle)\n",
-              IP_N, IP_N1, METRIC, UNROLLED ? "unrolled" : "iterative", matched, cycle,
+  std::printf("%s n=%d n1=%d metric %d %s: matched %ld items in %ld cycles (%.3f items/cycle)\n",
+              kName, IP_N, IP_N1, METRIC, UNROLLED ? "unrolled" : "iterative", matched, cycle,
               static_cast<double>(matched) / cycle);
   return 0;
 }

@@ -9,5 +9,5 @@ rpu_verilated_test(tb_rpu_ip_iter_n8_n1_4 TOP rpu_ip TB tb/tb_rpu_ip.cpp SOURCES
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" UNROLLED=0 IP_N=8 IP_N1=4)
 set(RPU_IP_STEP_RTL ${RPU_RTL_DIR}/rpu_ip_step.v ${RPU_RTL_DIR}/rpu_candidate.v
     ${RPU_RTL_DIR}/rpu_guide.v ${RPU_RTL_DIR}/rpu_curve_point.v ${RPU_RTL_DIR}/rpu_sqrt.v)
-rpu_verilated_test(tb_rpu_ip_step TOP rpu_ip_step TB tb/tb_rpu_ip_step.cpp SOURCES ${RPU_IP_STEP_RTL}
-                   PARAMS -GCtxW=32 -GStep=0 DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+rpu_verilated_test(tb_rpu_ip_step TOP rpu_ip_step TB tb/tb_rpu_ip.cpp SOURCES ${RPU_IP_STEP_RTL}
+                   PARAMS -GCtxW=32 -GStep=0 DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" IP_STEP=1)
