@@ -5,6 +5,8 @@
 # made it, so the test fails; the script's exit status is CTest's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache: hash paths relative to the checkout, so every clone of the project shares one cache.
+export CCACHE_BASEDIR="$PWD"
 start=$(date +%s)
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DRPU_SANITIZE=ON -DRPU_BENCH=OFF -DRPU_SIM=OFF >/dev/null
