@@ -5,7 +5,7 @@ set(RPU_GUIDE_SOURCES ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_guide.v)
 rpu_verilated_test(tb_rpu_guide TOP rpu_guide TB tb/tb_rpu_guide.cpp
                    SOURCES ${RPU_GUIDE_SOURCES}
                    DEFS VECTORS=100000)
-rpu_verilated_test(tb_rpu_guide_s40 TOP rpu_guide TB tb/tb_rpu_guide.cpp
+rpu_verilated_test(tb_rpu_guide_s40 EXTRA TOP rpu_guide TB tb/tb_rpu_guide.cpp
                    SOURCES ${RPU_GUIDE_SOURCES}
                    PARAMS -GSqrtW=40 DEFS SQRT_W=40 VECTORS=20000)
 rpu_verilated_test(tb_rpu_guide_w40 EXTRA TOP rpu_guide TB tb/tb_rpu_guide.cpp

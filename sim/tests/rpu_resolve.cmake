@@ -3,7 +3,7 @@
 # narrow configuration (pixel index wrapping at 6 bits, 3-bit ids, 20-bit depths); a wide one
 # (128-bit depths, 31-bit ids, 64-bit pixels) is opt-in.
 rpu_verilated_test(tb_rpu_resolve TOP rpu_resolve TB tb/tb_rpu_resolve.cpp)
-rpu_verilated_test(tb_rpu_resolve_narrow TOP rpu_resolve TB tb/tb_rpu_resolve.cpp
+rpu_verilated_test(tb_rpu_resolve_narrow EXTRA TOP rpu_resolve TB tb/tb_rpu_resolve.cpp
                    PARAMS -GPixW=6 -GDepthW=20 -GPrimW=3 DEFS PIX_W=6 DEPTH_W=20 PRIM_W=3)
 rpu_verilated_test(tb_rpu_resolve_wide EXTRA TOP rpu_resolve TB tb/tb_rpu_resolve.cpp
                    PARAMS -GPixW=64 -GDepthW=128 -GPrimW=31

@@ -7,7 +7,7 @@ rpu_verilated_test(tb_rpu_sphere TOP rpu_sphere TB tb/tb_rpu_sphere.cpp
                            ${RPU_RTL_DIR}/rpu_sqrt.v
                    PARAMS -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8)
-rpu_verilated_test(tb_rpu_sphere_cw16_s32 TOP rpu_sphere TB tb/tb_rpu_sphere.cpp
+rpu_verilated_test(tb_rpu_sphere_cw16_s32 EXTRA TOP rpu_sphere TB tb/tb_rpu_sphere.cpp
                    SOURCES ${RPU_RTL_DIR}/rpu_sphere.v ${RPU_RTL_DIR}/rpu_chord.v
                            ${RPU_RTL_DIR}/rpu_sqrt.v
                    PARAMS -GCoordW=16 -GDirFrac=20 -GTFrac=20 -GInvW=16 -GSqrtW=32 -GTagW=8

@@ -11,6 +11,6 @@ add_test(NAME tb_rpu_top_xseeds COMMAND ${CMAKE_COMMAND} -DTB=$<TARGET_FILE:tb_r
          -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/x_seeds.cmake)
 set_tests_properties(tb_rpu_top_throughput tb_rpu_top_backpressure tb_rpu_top_xseeds
                      PROPERTIES LABELS rtl)
-rpu_verilated_test(tb_rpu_top_iter TOP rpu_top TB tb/tb_rpu_top.cpp SOURCES ${RPU_TOP_RTL}
-                   PARAMS -GUnrolled=0 DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TOP_UNROLLED=0)
-set_tests_properties(tb_rpu_top_iter PROPERTIES ARGS "frame;--size;24")
+rpu_verilated_test(tb_rpu_top_iter EXTRA TOP rpu_top TB tb/tb_rpu_top.cpp SOURCES ${RPU_TOP_RTL}
+                   PARAMS -GUnrolled=0 DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TOP_UNROLLED=0
+                   ARGS frame --size 24)
