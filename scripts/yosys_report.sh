@@ -1,0 +1,370 @@
+#!/usr/bin/env bash
+# Resource and logic-depth report of the RTL modules: Yosys `synth_xilinx` (7-series, flattened,
+# no I/O or clock buffers) of each module at its default parameters (or the configuration named
+# in the table below), the cell counts from `stat`, and the longest combinational path from `ltp`
+# on the mapped netlist. Needs only bash, coreutils, awk, sed, grep and Yosys (Debian's 0.23).
+#
+# Usage: scripts/yosys_report.sh [options] [module[:reduced] ...]
+#   (no modules)        every module of the table, smallest first; missing rtl files are skipped
+#   module:reduced      that module at its reduced configuration (rpu_ip, rpu_top)
+#   -r, --reduced       rpu_ip and rpu_top at their reduced configurations instead of the defaults
+#   -R                  both: the reduced configurations as extra rows, run before the full ones
+#   -G mod:Param=Value  override one parameter of one module (repeatable)
+#   -j N                parallel Yosys runs (default 1)
+#   -t SECONDS          time limit per module (default 1200); over it the row says "timeout"
+#   -m MB               memory limit per Yosys run (virtual, default 8000); over it: "out of memory"
+#   -o FILE             also write the Markdown table to FILE
+#   -c FILE             also write the table as CSV to FILE
+#   -k DIR              keep the Yosys scripts, logs and reports in DIR (default: a temporary dir)
+#   -n                  dry run: print each module's configuration and files, run nothing
+#   -h                  this help
+# The Markdown table goes to stdout, progress to stderr. Exit status 1 if a run failed (an
+# error, not a timeout or a skipped module).
+#
+# Columns (all from `stat` after synth_xilinx -flatten):
+#   LUT      LUT1..LUT6 + INV (logic LUTs)        FF      FDRE/FDSE/FDCE/FDPE (+ latches)
+#   SRL      SRL16E/SRLC32E (one LUT each)        LUTRAM  distributed-RAM cells in LUTs
+#   DSP      DSP48E1                              BRAM36  RAMB36E1 + RAMB18E1 / 2
+#   CARRY4, MUXF7/8 as counted.
+# Longest path: `ltp` (longest topological path) on the mapped netlist with every flip-flop,
+# SRL, block RAM and DSP with an internal M or P register as a path break (a path starts at a
+# register or an input port and ends at a register or an output port). Every LUT, CARRY4,
+# MUXF7/F8, LUTRAM read and DSP48E1 on the path counts one level (unit delay). A DSP whose A or B
+# operand is registered inside it (AREG/BREG, how synth_xilinx absorbs operand registers) ends
+# the paths into that operand and starts the paths through its multiplier
+# (scripts/yosys/ltp_cells.v). It is a logic-depth measure, not a timing analysis: a CARRY4 is
+# 4 carry bits and much faster than a LUT level, a DSP much slower.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+rtl=$root/rtl
+ltp_cells=$root/scripts/yosys/ltp_cells.v
+
+# ---- the module table ----
+# Direct submodules (the script follows them recursively, and also adds any rpu_* instantiated
+# in a file that the table does not list, so a new submodule still gets read).
+declare -A DEPS=(
+  [rpu_sqrt]=""
+  [rpu_div]=""
+  [rpu_chord]=""
+  [rpu_capture]=""
+  [rpu_resolve]=""
+  [rpu_curve_point]=""
+  [rpu_guide]="rpu_sqrt"
+  [rpu_ray_gen]="rpu_sqrt rpu_div"
+  [rpu_sphere]="rpu_sqrt rpu_chord"
+  [rpu_candidate]="rpu_guide rpu_curve_point rpu_sqrt"
+  [rpu_ip_step]="rpu_candidate"
+  [rpu_ip]="rpu_ip_step rpu_candidate"
+  [rpu_ray_plane]="rpu_div"
+  [rpu_texture]="rpu_chord rpu_guide rpu_curve_point"
+  [rpu_top]="rpu_ray_gen rpu_sphere rpu_ip rpu_capture"
+)
+# Parameters set for the report (empty: the module's defaults).
+declare -A PARAMS=(
+  [rpu_sqrt]="RadW=58"                       # the guide's radicand (= the default)
+  [rpu_div]="NumW=51 DenW=28 QuotW=27"       # rpu_ray_gen's reciprocal 2^(2FV+2)/|v|, FV = 24
+)
+# Reduced configurations (-r or module:reduced): the iterative IP, one rpu_ip_step unit reused
+# K = N/N1 = 8 times instead of 8 unrolled step units (about 1/8 of the one-item-per-cycle rate).
+declare -A REDUCED=(
+  [rpu_ip]="Unrolled=0"
+  [rpu_top]="Unrolled=0"
+)
+# Default module list and run order: roughly by size, the biggest last.
+ALL=(rpu_resolve rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guide rpu_ray_plane
+     rpu_ray_gen rpu_texture rpu_sphere rpu_candidate rpu_ip_step rpu_ip rpu_top)
+
+usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
+
+jobs_max=1 tlimit=1200 mlimit=8000 md_out="" csv_out="" keep="" reduced_mode="" dry=0
+declare -A OVERRIDE=()
+specs=()
+while (($#)); do
+  case $1 in
+    -j) jobs_max=$2; shift 2 ;;
+    -j*) jobs_max=${1#-j}; shift ;;
+    -t) tlimit=$2; shift 2 ;;
+    -o) md_out=$2; shift 2 ;;
+    -c) csv_out=$2; shift 2 ;;
+    -k) keep=$2; shift 2 ;;
+    -m) mlimit=$2; shift 2 ;;
+    -n) dry=1; shift ;;
+    -r|--reduced) reduced_mode=only; shift ;;
+    -R) reduced_mode=both; shift ;;
+    -G) m=${2%%:*}; OVERRIDE[$m]="${OVERRIDE[$m]:-} ${2#*:}"; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    -*) echo "yosys_report: unknown option $1" >&2; usage >&2; exit 2 ;;
+    *) specs+=("$1"); shift ;;
+  esac
+done
+((${#specs[@]})) || specs=("${ALL[@]}")
+[[ $jobs_max =~ ^[1-9][0-9]*$ ]] || { echo "yosys_report: -j needs a positive number" >&2; exit 2; }
+[[ $tlimit =~ ^[1-9][0-9]*$ ]] || { echo "yosys_report: -t needs a positive number" >&2; exit 2; }
+[[ $mlimit =~ ^[1-9][0-9]*$ ]] || { echo "yosys_report: -m needs a positive number" >&2; exit 2; }
+# -r: reducible modules at their reduced configuration; -R: those rows first, then the full ones.
+if [[ -n $reduced_mode ]]; then
+  plain=() reduced=() full=()
+  for spec in "${specs[@]}"; do
+    if [[ $spec == *:* || -z ${REDUCED[$spec]:-} ]]; then plain+=("$spec")
+    else reduced+=("$spec:reduced"); full+=("$spec"); fi
+  done
+  specs=("${plain[@]}" "${reduced[@]}")
+  if [[ $reduced_mode == both ]]; then specs+=("${full[@]}"); fi
+fi
+command -v yosys >/dev/null || { echo "yosys_report: yosys not found" >&2; exit 2; }
+
+if [[ -n $keep ]]; then
+  mkdir -p "$keep"
+  work=$(cd "$keep" && pwd)
+  rm -f "$work"/[0-9][0-9]_*  # an earlier run's files
+else
+  work=$(mktemp -d "${TMPDIR:-/tmp}/yosys_report.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
+yosys_version=$(yosys -V 2>/dev/null | head -1)
+
+# Submodules instantiated in a file: lines `rpu_x #(` or `rpu_x u_name (`.
+instantiated() {
+  sed -n 's/^[[:space:]]*\(rpu_[A-Za-z0-9_]*\)[[:space:]]*\(#\|[A-Za-z_][A-Za-z0-9_]*[[:space:]]*(\).*/\1/p' "$1" |
+    sort -u
+}
+
+# The files of a module and its submodules (top first); fails naming the first missing file.
+files_of() {
+  local top=$1 queue=("$1") seen=" " m d out=()
+  while ((${#queue[@]})); do
+    m=${queue[0]}
+    queue=("${queue[@]:1}")
+    [[ $seen == *" $m "* ]] && continue
+    seen+="$m "
+    [[ -f $rtl/$m.v ]] || { echo "rtl/$m.v"; return 1; }
+    out+=("$rtl/$m.v")
+    for d in ${DEPS[$m]:-} $(instantiated "$rtl/$m.v"); do
+      [[ $d == "$m" ]] || queue+=("$d")
+    done
+  done
+  printf '%s\n' "${out[@]}"
+  : "$top"
+}
+
+# One module: synthesise, write $work/$tag.row (tab-separated fields of the table).
+run_one() {
+  local idx=$1 spec=$2 mod red=0 tag params p files t0 t1 rc
+  mod=${spec%%:*}
+  if [[ $spec == *:reduced ]]; then red=1; fi
+  tag=$(printf '%02d_%s' "$idx" "${spec/:/_}")
+  params="${PARAMS[$mod]:-}"
+  if ((red)); then
+    [[ -n ${REDUCED[$mod]:-} ]] || { echo "yosys_report: $mod has no reduced configuration" >&2; return 1; }
+    params="$params ${REDUCED[$mod]}"
+  fi
+  # Later settings of a parameter replace earlier ones (table, reduced, -G).
+  local merged=() q i
+  for p in $params ${OVERRIDE[$mod]:-}; do
+    for i in "${!merged[@]}"; do
+      q=${merged[$i]}
+      if [[ ${q%%=*} == "${p%%=*}" ]]; then unset 'merged[i]'; fi
+    done
+    merged+=("$p")
+  done
+  params="${merged[*]}"
+  local config=${params:-defaults}
+  if ((red)); then config="$config (reduced)"; fi
+
+  if ! files=$(files_of "$mod"); then
+    printf '%s\t%s\tskipped (no %s)\n' "$mod" "$config" "$files" >"$work/$tag.row"
+    echo "[$(date +%T)] $spec: skipped, $files missing" >&2
+    return 0
+  fi
+  local flist=${files//$'\n'/ } chparam=""
+  for p in $params; do chparam+=" -chparam ${p%%=*} ${p#*=}"; done
+  local sel="$mod/t:FD* $mod/t:LD* %u $mod/t:SRL* %u $mod/t:RAMB* %u"
+  sel="$sel $mod/t:DSP48E1 r:MREG>0 %i %u $mod/t:DSP48E1 r:PREG>0 %i %u"
+  local comb="r:MREG<1 %i r:PREG<1 %i"
+  cat >"$work/$tag.ys" <<EOF
+read_verilog $flist
+hierarchy -check -top $mod$chparam
+synth_xilinx -flatten -noiopad -noclkbuf -top $mod
+tee -q -o $work/$tag.stat stat -tech xilinx
+tee -q -o $work/$tag.cells.L select -list $mod/t:LUT* $mod/t:INV %u
+tee -q -o $work/$tag.cells.C select -list $mod/t:CARRY4
+tee -q -o $work/$tag.cells.M select -list $mod/t:MUXF*
+tee -q -o $work/$tag.cells.D select -list $mod/t:DSP48E1
+tee -q -o $work/$tag.cells.R select -list $mod/t:RAM* $mod/t:RAMB* %d
+read_verilog -lib $ltp_cells
+chtype -set RPU_LTP_DSP48E1_AB $mod/t:DSP48E1 r:AREG>0 %i r:BREG>0 %i $comb
+chtype -set RPU_LTP_DSP48E1_A $mod/t:DSP48E1 r:AREG>0 %i $comb
+chtype -set RPU_LTP_DSP48E1_B $mod/t:DSP48E1 r:BREG>0 %i $comb
+select -set breaks $sel
+tee -q -o $work/$tag.ltp ltp -noff $mod/* @breaks %d
+EOF
+  if ((dry)); then
+    echo "$spec: $config: $flist"
+    return 0
+  fi
+  echo "[$(date +%T)] $spec: started ($config)" >&2
+  t0=$(date +%s)
+  set +e
+  (
+    ulimit -v $((mlimit * 1024))
+    exec timeout -k 30 "$tlimit" yosys -q -l "$work/$tag.log" "$work/$tag.ys"
+  ) >"$work/$tag.out" 2>&1
+  rc=$?
+  set -e
+  t1=$(date +%s)
+  if ((rc == 124 || rc == 137)); then
+    printf '%s\t%s\ttimeout (> %s s)\n' "$mod" "$config" "$tlimit" >"$work/$tag.row"
+    echo "[$(date +%T)] $spec: timeout after $((t1 - t0)) s" >&2
+    return 0
+  elif ((rc != 0)) && grep -qsE 'bad_alloc|[Oo]ut of memory|Cannot allocate' "$work/$tag.out" "$work/$tag.log"; then
+    printf '%s\t%s\tout of memory (> %s MB)\n' "$mod" "$config" "$mlimit" >"$work/$tag.row"
+    echo "[$(date +%T)] $spec: out of memory after $((t1 - t0)) s" >&2
+    return 0
+  elif ((rc != 0)); then
+    local why
+    why=$(grep -m1 -E 'ERROR|error' "$work/$tag.log" "$work/$tag.out" 2>/dev/null | cut -c1-120 | tr '\t|' '  ')
+    printf '%s\t%s\terror: %s\n' "$mod" "$config" "${why:-exit $rc}" >"$work/$tag.row"
+    echo "[$(date +%T)] $spec: FAILED ($why), see $work/$tag.log" >&2
+    return 0
+  fi
+  # Resources from stat; the path and its make-up from ltp and the cell lists.
+  awk -v mod="$mod" -v config="$config" -v secs=$((t1 - t0)) -v work="$work" -v tag="$tag" '
+    function load(cls,   f, line) {
+      f = work "/" tag ".cells." cls
+      while ((getline line < f) > 0) {
+        sub(/^[ \t]+/, "", line); sub(/[ \t\r]+$/, "", line)
+        if (index(line, mod "/") == 1) line = substr(line, length(mod) + 2)
+        if (line != "") kind[line] = cls
+      }
+      close(f)
+    }
+    BEGIN {
+      load("L"); load("C"); load("M"); load("D"); load("R")
+      # LUTs used by each distributed-RAM primitive
+      lr["RAM32X1S"] = 1; lr["RAM64X1S"] = 1; lr["RAM128X1S"] = 2; lr["RAM256X1S"] = 4
+      lr["RAM32X1D"] = 2; lr["RAM64X1D"] = 2; lr["RAM128X1D"] = 4; lr["RAM32M"] = 4
+      lr["RAM64M"] = 4; lr["RAM32M16"] = 8; lr["RAM64M8"] = 8; lr["RAM512X1S"] = 8
+      f = work "/" tag ".stat"
+      while ((getline line < f) > 0) {
+        if (line ~ /Estimated number of LCs:/) { n = split(line, a, " "); lcs = a[n]; continue }
+        n = split(line, a, " ")
+        if (n != 2 || a[2] !~ /^[0-9]+$/) continue
+        t = a[1]; c = a[2] + 0
+        if (t ~ /^LUT[1-6]$/ || t == "INV") lut += c
+        else if (t ~ /^FD[RSCP]E$/ || t ~ /^LD[CP]E$/) ff += c
+        else if (t ~ /^SRL/) srl += c
+        else if (t in lr) lutram += c * lr[t]
+        else if (t == "DSP48E1") dsp += c
+        else if (t == "RAMB36E1") b36 += c
+        else if (t == "RAMB18E1") b18 += c
+        else if (t == "CARRY4") carry += c
+        else if (t ~ /^MUXF[78]$/) muxf += c
+        else if (t != "GND" && t != "VCC" && t != "BUFG" && t != "IBUF" && t != "OBUF")
+          other = other (other == "" ? "" : ", ") t " " c
+      }
+      close(f)
+      f = work "/" tag ".ltp"
+      len = "?"
+      while ((getline line < f) > 0) {
+        if (match(line, /\(length=-?[0-9]+\)/)) { len = substr(line, RSTART + 8, RLENGTH - 9); continue }
+        if (line !~ /\(via .*\)[ \t\r]*$/) continue
+        sub(/[ \t\r]+$/, "", line)
+        p = index(line, "(via ")
+        cell = substr(line, p + 5, length(line) - p - 5)
+        k = (cell in kind) ? kind[cell] : "O"
+        cnt[k]++
+      }
+      close(f)
+      f = work "/" tag ".log"
+      mem = "-"
+      while ((getline line < f) > 0)
+        if (match(line, /MEM: [0-9.]+ MB peak/)) mem = sprintf("%d", substr(line, RSTART + 5, RLENGTH - 13) + 0.5)
+      close(f)
+      names["L"] = "LUT"; names["C"] = "CARRY4"; names["M"] = "MUXF"; names["D"] = "DSP"
+      names["R"] = "LUTRAM"; names["O"] = "other"
+      mix = ""
+      split("L C M D R O", order, " ")
+      for (i = 1; i <= 6; i++)
+        if (cnt[order[i]] > 0) mix = mix (mix == "" ? "" : " + ") cnt[order[i]] " " names[order[i]]
+      path = len (mix == "" ? "" : " (" mix ")")
+      bram = b36 + b18 / 2
+      if (lcs == "") lcs = "-"
+      printf "%s\t%s\tok\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%s\t%s\t%d\t%s\t%s\n", mod, config, lut, ff,
+             srl, lutram, dsp, bram, carry, muxf, lcs, path, secs, mem, other
+    }' </dev/null >"$work/$tag.row"
+  echo "[$(date +%T)] $spec: done in $((t1 - t0)) s" >&2
+}
+
+# ---- run, at most jobs_max at a time ----
+start=$(date +%s)
+echo "yosys_report: ${#specs[@]} module(s), -j $jobs_max, limit $tlimit s per module, $yosys_version, work dir $work" >&2
+for spec in "${specs[@]}"; do
+  m=${spec%%:*}
+  if [[ -z ${DEPS[$m]+x} && ! -f $rtl/$m.v ]]; then
+    echo "yosys_report: unknown module $m" >&2
+    exit 2
+  fi
+  if [[ $spec == *:* && ( $spec != *:reduced || -z ${REDUCED[$m]:-} ) ]]; then
+    echo "yosys_report: $spec: only ${!REDUCED[*]} have a :reduced configuration" >&2
+    exit 2
+  fi
+done
+idx=0
+for spec in "${specs[@]}"; do
+  idx=$((idx + 1))
+  while (($(jobs -rp | wc -l) >= jobs_max)); do wait -n || true; done
+  if ((dry)); then run_one "$idx" "$spec"; continue; fi
+  run_one "$idx" "$spec" &
+done
+wait
+if ((dry)); then exit 0; fi
+elapsed=$(($(date +%s) - start))
+
+# ---- the table ----
+header=(Module Configuration LUT FF SRL LUTRAM DSP48E1 BRAM36 CARRY4 MUXF7/8 "Est. LCs"
+        "Longest path (levels)" "Yosys s" "Yosys MB")
+md() {
+  local h
+  for h in "${header[@]}"; do printf '| %s ' "$h"; done; echo '|'
+  for h in "${header[@]}"; do printf -- '|---'; done; echo '|'
+  local f row fields status
+  for f in "$work"/*.row; do
+    [[ -e $f ]] || continue
+    IFS=$'\t' read -r -a fields <"$f"
+    status=${fields[2]}
+    if [[ $status == ok ]]; then
+      row="| ${fields[0]} | ${fields[1]} | ${fields[3]} | ${fields[4]} | ${fields[5]} | ${fields[6]}"
+      row+=" | ${fields[7]} | ${fields[8]} | ${fields[9]} | ${fields[10]} | ${fields[11]}"
+      row+=" | ${fields[12]} | ${fields[13]} | ${fields[14]} |"
+      echo "$row"
+      if [[ -n ${fields[15]:-} ]]; then
+        echo "yosys_report: ${fields[0]}: other cells: ${fields[15]}" >&2
+      fi
+    else
+      echo "| ${fields[0]} | ${fields[1]} | $status | | | | | | | | | | | |"
+    fi
+  done
+}
+csv() {
+  local IFS=,
+  local line="${header[*]}"
+  echo "${line/ (levels)/}"
+  local f fields
+  for f in "$work"/*.row; do
+    [[ -e $f ]] || continue
+    IFS=$'\t' read -r -a fields <"$f"
+    if [[ ${fields[2]} == ok ]]; then
+      printf '%s,"%s",%s,%s,%s,%s,%s,%s,%s,%s,%s,"%s",%s,%s\n' "${fields[0]}" "${fields[1]}" \
+        "${fields[@]:3:9}" "${fields[12]}" "${fields[13]}" "${fields[14]}"
+    else
+      printf '%s,"%s","%s",,,,,,,,,,,\n' "${fields[0]}" "${fields[1]}" "${fields[2]}"
+    fi
+  done
+}
+table=$(md)
+echo "$table"
+if [[ -n $md_out ]]; then echo "$table" >"$md_out"; fi
+if [[ -n $csv_out ]]; then csv >"$csv_out"; fi
+echo "yosys_report: finished in $elapsed s" >&2
+! grep -qs $'\terror:' "$work"/*.row
