@@ -122,6 +122,18 @@ else
   work=$(mktemp -d "${TMPDIR:-/tmp}/yosys_report.XXXXXX")
   trap 'rm -rf "$work"' EXIT
 fi
+# Interrupted: end the Yosys runs this report started (each a process group led by `timeout`).
+stop_runs() {
+  local f
+  # shellcheck disable=SC2046  # the job pids, one word each
+  kill $(jobs -p) 2>/dev/null
+  for f in "$work"/*.pid; do
+    [[ -e $f ]] && kill -TERM -- "-$(cat "$f")" 2>/dev/null
+  done
+  echo "yosys_report: interrupted" >&2
+  exit 130
+}
+trap stop_runs INT TERM
 yosys_version=$(yosys -V 2>/dev/null | head -1)
 
 # Submodules instantiated in a file: lines `rpu_x #(` or `rpu_x u_name (`.
@@ -205,13 +217,18 @@ EOF
   fi
   echo "[$(date +%T)] $spec: started ($config)" >&2
   t0=$(date +%s)
-  set +e
+  # `timeout` runs in a process group of its own (Yosys and its ABC children); its pid is
+  # recorded so that an interrupted report can end that group (see the trap below).
   (
     ulimit -v $((mlimit * 1024))
     exec timeout -k 30 "$tlimit" yosys -q -l "$work/$tag.log" "$work/$tag.ys"
-  ) >"$work/$tag.out" 2>&1
+  ) >"$work/$tag.out" 2>&1 &
+  echo $! >"$work/$tag.pid"
+  set +e
+  wait $!
   rc=$?
   set -e
+  rm -f "$work/$tag.pid"
   t1=$(date +%s)
   if ((rc == 124 || rc == 137)); then
     printf '%s\t%s\ttimeout (> %s s)\n' "$mod" "$config" "$tlimit" >"$work/$tag.row"
