@@ -17,12 +17,13 @@
 #   -c FILE             also write the table as CSV to FILE
 #   -k DIR              keep the Yosys scripts, logs and reports in DIR (default: a temporary dir)
 #   -n                  dry run: print each module's configuration and files, run nothing
+#   -P DIR              no synthesis: tabulate again the files an earlier run kept in DIR (-k)
 #   -h                  this help
 # The Markdown table goes to stdout, progress to stderr. Exit status 1 if a run failed (an
 # error, not a timeout or a skipped module).
 #
 # Columns (all from `stat` after synth_xilinx -flatten):
-#   LUT      LUT1..LUT6 + INV (logic LUTs)        FF      FDRE/FDSE/FDCE/FDPE (+ latches)
+#   LUT      LUT1..LUT6 (INV: own column)         FF      FDRE/FDSE/FDCE/FDPE (+ latches)
 #   SRL      SRL16E/SRLC32E (one LUT each)        LUTRAM  distributed-RAM cells in LUTs
 #   DSP      DSP48E1                              BRAM36  RAMB36E1 + RAMB18E1 / 2
 #   CARRY4, MUXF7/8 as counted.
@@ -39,6 +40,10 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 rtl=$root/rtl
 ltp_cells=$root/scripts/yosys/ltp_cells.v
+
+# The report's columns (tabulate writes the values in this order).
+header=(Module Configuration LUT INV FF SRL LUTRAM DSP48E1 BRAM36 CARRY4 MUXF7/8 "Est. LCs"
+        "Longest path (levels)" "Yosys s" "Yosys MB")
 
 # ---- the module table ----
 # Direct submodules (the script follows them recursively, and also adds any rpu_* instantiated
@@ -77,7 +82,7 @@ ALL=(rpu_resolve rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guid
 
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
-jobs_max=1 tlimit=1200 mlimit=8000 md_out="" csv_out="" keep="" reduced_mode="" dry=0
+jobs_max=1 tlimit=1200 mlimit=8000 md_out="" csv_out="" keep="" reduced_mode="" dry=0 reparse=""
 declare -A OVERRIDE=()
 specs=()
 while (($#)); do
@@ -90,6 +95,7 @@ while (($#)); do
     -k) keep=$2; shift 2 ;;
     -m) mlimit=$2; shift 2 ;;
     -n) dry=1; shift ;;
+    -P) reparse=$2; shift 2 ;;
     -r|--reduced) reduced_mode=only; shift ;;
     -R) reduced_mode=both; shift ;;
     -G) m=${2%%:*}; OVERRIDE[$m]="${OVERRIDE[$m]:-} ${2#*:}"; shift 2 ;;
@@ -114,7 +120,10 @@ if [[ -n $reduced_mode ]]; then
 fi
 command -v yosys >/dev/null || { echo "yosys_report: yosys not found" >&2; exit 2; }
 
-if [[ -n $keep ]]; then
+if [[ -n $reparse ]]; then
+  [[ -d $reparse ]] || { echo "yosys_report: no directory $reparse" >&2; exit 2; }
+  work=$(cd "$reparse" && pwd)
+elif [[ -n $keep ]]; then
   mkdir -p "$keep"
   work=$(cd "$keep" && pwd)
   rm -f "$work"/[0-9][0-9]_*  # an earlier run's files
@@ -158,6 +167,79 @@ files_of() {
   done
   printf '%s\n' "${out[@]}"
   : "$top"
+}
+
+# The row of a finished run: resources from stat, the path and its make-up from ltp and the
+# cell lists, peak memory from the log. Fields: module, configuration, "ok", the values of
+# header[2..] in order, other cell types (if any).
+tabulate() {
+  local tag=$1 mod=$2 config=$3 secs=$4
+  awk -v mod="$mod" -v config="$config" -v secs="$secs" -v work="$work" -v tag="$tag" '
+    function load(cls,   f, line) {
+      f = work "/" tag ".cells." cls
+      while ((getline line < f) > 0) {
+        sub(/^[ \t]+/, "", line); sub(/[ \t\r]+$/, "", line)
+        if (index(line, mod "/") == 1) line = substr(line, length(mod) + 2)
+        if (line != "") kind[line] = cls
+      }
+      close(f)
+    }
+    BEGIN {
+      load("L"); load("C"); load("M"); load("D"); load("R")
+      # LUTs used by each distributed-RAM primitive
+      lr["RAM32X1S"] = 1; lr["RAM64X1S"] = 1; lr["RAM128X1S"] = 2; lr["RAM256X1S"] = 4
+      lr["RAM32X1D"] = 2; lr["RAM64X1D"] = 2; lr["RAM128X1D"] = 4; lr["RAM32M"] = 4
+      lr["RAM64M"] = 4; lr["RAM32M16"] = 8; lr["RAM64M8"] = 8; lr["RAM512X1S"] = 8
+      f = work "/" tag ".stat"
+      while ((getline line < f) > 0) {
+        if (line ~ /Estimated number of LCs:/) { n = split(line, a, " "); lcs = a[n]; continue }
+        n = split(line, a, " ")
+        if (n != 2 || a[2] !~ /^[0-9]+$/) continue
+        t = a[1]; c = a[2] + 0
+        if (t ~ /^LUT[1-6]$/) lut += c
+        else if (t == "INV") inv += c
+        else if (t ~ /^FD[RSCP]E$/ || t ~ /^LD[CP]E$/) ff += c
+        else if (t ~ /^SRL/) srl += c
+        else if (t in lr) lutram += c * lr[t]
+        else if (t == "DSP48E1") dsp += c
+        else if (t == "RAMB36E1") b36 += c
+        else if (t == "RAMB18E1") b18 += c
+        else if (t == "CARRY4") carry += c
+        else if (t ~ /^MUXF[78]$/) muxf += c
+        else if (t != "GND" && t != "VCC" && t != "BUFG" && t != "IBUF" && t != "OBUF")
+          other = other (other == "" ? "" : ", ") t " " c
+      }
+      close(f)
+      f = work "/" tag ".ltp"
+      len = "?"
+      while ((getline line < f) > 0) {
+        if (match(line, /\(length=-?[0-9]+\)/)) { len = substr(line, RSTART + 8, RLENGTH - 9); continue }
+        if (line !~ /\(via .*\)[ \t\r]*$/) continue
+        sub(/[ \t\r]+$/, "", line)
+        p = index(line, "(via ")
+        cell = substr(line, p + 5, length(line) - p - 5)
+        k = (cell in kind) ? kind[cell] : "O"
+        cnt[k]++
+      }
+      close(f)
+      f = work "/" tag ".log"
+      mem = "-"
+      while ((getline line < f) > 0)
+        if (match(line, /MEM: [0-9.]+ MB peak/)) mem = sprintf("%d", substr(line, RSTART + 5, RLENGTH - 13) + 0.5)
+      close(f)
+      names["L"] = "LUT"; names["C"] = "CARRY4"; names["M"] = "MUXF"; names["D"] = "DSP"
+      names["R"] = "LUTRAM"; names["O"] = "other"
+      mix = ""
+      split("L C M D R O", order, " ")
+      for (i = 1; i <= 6; i++)
+        if (cnt[order[i]] > 0) mix = mix (mix == "" ? "" : " + ") cnt[order[i]] " " names[order[i]]
+      path = len (mix == "" ? "" : " (" mix ")")
+      bram = b36 + b18 / 2
+      if (lcs == "") lcs = "-"
+      printf "%s\t%s\tok\t%d\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%s\t%s\t%s\t%s", mod, config, lut, inv,
+             ff, srl, lutram, dsp, bram, carry, muxf, lcs, path, secs, mem
+      printf "%s\n", other == "" ? "" : "\t" other
+    }' </dev/null >"$work/$tag.row"
 }
 
 # One module: synthesise, write $work/$tag.row (tab-separated fields of the table).
@@ -245,77 +327,25 @@ EOF
     echo "[$(date +%T)] $spec: FAILED ($why), see $work/$tag.log" >&2
     return 0
   fi
-  # Resources from stat; the path and its make-up from ltp and the cell lists.
-  awk -v mod="$mod" -v config="$config" -v secs=$((t1 - t0)) -v work="$work" -v tag="$tag" '
-    function load(cls,   f, line) {
-      f = work "/" tag ".cells." cls
-      while ((getline line < f) > 0) {
-        sub(/^[ \t]+/, "", line); sub(/[ \t\r]+$/, "", line)
-        if (index(line, mod "/") == 1) line = substr(line, length(mod) + 2)
-        if (line != "") kind[line] = cls
-      }
-      close(f)
-    }
-    BEGIN {
-      load("L"); load("C"); load("M"); load("D"); load("R")
-      # LUTs used by each distributed-RAM primitive
-      lr["RAM32X1S"] = 1; lr["RAM64X1S"] = 1; lr["RAM128X1S"] = 2; lr["RAM256X1S"] = 4
-      lr["RAM32X1D"] = 2; lr["RAM64X1D"] = 2; lr["RAM128X1D"] = 4; lr["RAM32M"] = 4
-      lr["RAM64M"] = 4; lr["RAM32M16"] = 8; lr["RAM64M8"] = 8; lr["RAM512X1S"] = 8
-      f = work "/" tag ".stat"
-      while ((getline line < f) > 0) {
-        if (line ~ /Estimated number of LCs:/) { n = split(line, a, " "); lcs = a[n]; continue }
-        n = split(line, a, " ")
-        if (n != 2 || a[2] !~ /^[0-9]+$/) continue
-        t = a[1]; c = a[2] + 0
-        if (t ~ /^LUT[1-6]$/ || t == "INV") lut += c
-        else if (t ~ /^FD[RSCP]E$/ || t ~ /^LD[CP]E$/) ff += c
-        else if (t ~ /^SRL/) srl += c
-        else if (t in lr) lutram += c * lr[t]
-        else if (t == "DSP48E1") dsp += c
-        else if (t == "RAMB36E1") b36 += c
-        else if (t == "RAMB18E1") b18 += c
-        else if (t == "CARRY4") carry += c
-        else if (t ~ /^MUXF[78]$/) muxf += c
-        else if (t != "GND" && t != "VCC" && t != "BUFG" && t != "IBUF" && t != "OBUF")
-          other = other (other == "" ? "" : ", ") t " " c
-      }
-      close(f)
-      f = work "/" tag ".ltp"
-      len = "?"
-      while ((getline line < f) > 0) {
-        if (match(line, /\(length=-?[0-9]+\)/)) { len = substr(line, RSTART + 8, RLENGTH - 9); continue }
-        if (line !~ /\(via .*\)[ \t\r]*$/) continue
-        sub(/[ \t\r]+$/, "", line)
-        p = index(line, "(via ")
-        cell = substr(line, p + 5, length(line) - p - 5)
-        k = (cell in kind) ? kind[cell] : "O"
-        cnt[k]++
-      }
-      close(f)
-      f = work "/" tag ".log"
-      mem = "-"
-      while ((getline line < f) > 0)
-        if (match(line, /MEM: [0-9.]+ MB peak/)) mem = sprintf("%d", substr(line, RSTART + 5, RLENGTH - 13) + 0.5)
-      close(f)
-      names["L"] = "LUT"; names["C"] = "CARRY4"; names["M"] = "MUXF"; names["D"] = "DSP"
-      names["R"] = "LUTRAM"; names["O"] = "other"
-      mix = ""
-      split("L C M D R O", order, " ")
-      for (i = 1; i <= 6; i++)
-        if (cnt[order[i]] > 0) mix = mix (mix == "" ? "" : " + ") cnt[order[i]] " " names[order[i]]
-      path = len (mix == "" ? "" : " (" mix ")")
-      bram = b36 + b18 / 2
-      if (lcs == "") lcs = "-"
-      printf "%s\t%s\tok\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%s\t%s\t%d\t%s\t%s\n", mod, config, lut, ff,
-             srl, lutram, dsp, bram, carry, muxf, lcs, path, secs, mem, other
-    }' </dev/null >"$work/$tag.row"
+  echo $((t1 - t0)) >"$work/$tag.secs"
+  tabulate "$tag" "$mod" "$config" $((t1 - t0))
   echo "[$(date +%T)] $spec: done in $((t1 - t0)) s" >&2
 }
 
-# ---- run, at most jobs_max at a time ----
+# ---- run, at most jobs_max at a time (or -P: tabulate the kept files again) ----
 start=$(date +%s)
-echo "yosys_report: ${#specs[@]} module(s), -j $jobs_max, limit $tlimit s per module, $yosys_version, work dir $work" >&2
+if [[ -n $reparse ]]; then
+  for f in "$work"/*.row; do
+    [[ -e $f ]] || continue
+    IFS=$'\t' read -r -a fields <"$f"
+    tag=$(basename "$f" .row)
+    if [[ ${fields[2]} == ok && -e $work/$tag.secs ]]; then
+      tabulate "$tag" "${fields[0]}" "${fields[1]}" "$(cat "$work/$tag.secs")"
+    fi
+  done
+  specs=()
+fi
+[[ -n $reparse ]] || echo "yosys_report: ${#specs[@]} module(s), -j $jobs_max, limit $tlimit s per module, $yosys_version, work dir $work" >&2
 for spec in "${specs[@]}"; do
   m=${spec%%:*}
   if [[ -z ${DEPS[$m]+x} && ! -f $rtl/$m.v ]]; then
@@ -339,44 +369,40 @@ if ((dry)); then exit 0; fi
 elapsed=$(($(date +%s) - start))
 
 # ---- the table ----
-header=(Module Configuration LUT FF SRL LUTRAM DSP48E1 BRAM36 CARRY4 MUXF7/8 "Est. LCs"
-        "Longest path (levels)" "Yosys s" "Yosys MB")
 md() {
-  local h
+  local h f fields k
   for h in "${header[@]}"; do printf '| %s ' "$h"; done; echo '|'
   for h in "${header[@]}"; do printf -- '|---'; done; echo '|'
-  local f row fields status
   for f in "$work"/*.row; do
     [[ -e $f ]] || continue
     IFS=$'\t' read -r -a fields <"$f"
-    status=${fields[2]}
-    if [[ $status == ok ]]; then
-      row="| ${fields[0]} | ${fields[1]} | ${fields[3]} | ${fields[4]} | ${fields[5]} | ${fields[6]}"
-      row+=" | ${fields[7]} | ${fields[8]} | ${fields[9]} | ${fields[10]} | ${fields[11]}"
-      row+=" | ${fields[12]} | ${fields[13]} | ${fields[14]} |"
-      echo "$row"
-      if [[ -n ${fields[15]:-} ]]; then
-        echo "yosys_report: ${fields[0]}: other cells: ${fields[15]}" >&2
+    printf '| %s | %s ' "${fields[0]}" "${fields[1]}"
+    if [[ ${fields[2]} == ok ]]; then
+      for ((k = 3; k < ${#header[@]} + 1; k++)); do printf '| %s ' "${fields[k]}"; done
+      if [[ -n ${fields[${#header[@]}+1]:-} ]]; then
+        echo "yosys_report: ${fields[0]}: other cells: ${fields[${#header[@]}+1]}" >&2
       fi
     else
-      echo "| ${fields[0]} | ${fields[1]} | $status | | | | | | | | | | | |"
+      printf '| %s ' "${fields[2]}"
+      for ((k = 3; k < ${#header[@]}; k++)); do printf '| '; done
     fi
+    echo '|'
   done
 }
 csv() {
-  local IFS=,
-  local line="${header[*]}"
-  echo "${line/ (levels)/}"
-  local f fields
+  local f fields k n=$((${#header[@]} + 1)) line
+  line=$(printf '"%s",' "${header[@]}")
+  echo "${line%,}"
   for f in "$work"/*.row; do
     [[ -e $f ]] || continue
     IFS=$'\t' read -r -a fields <"$f"
-    if [[ ${fields[2]} == ok ]]; then
-      printf '%s,"%s",%s,%s,%s,%s,%s,%s,%s,%s,%s,"%s",%s,%s\n' "${fields[0]}" "${fields[1]}" \
-        "${fields[@]:3:9}" "${fields[12]}" "${fields[13]}" "${fields[14]}"
-    else
-      printf '%s,"%s","%s",,,,,,,,,,,\n' "${fields[0]}" "${fields[1]}" "${fields[2]}"
-    fi
+    if [[ ${fields[2]} != ok ]]; then fields=("${fields[0]}" "${fields[1]}" "" "${fields[2]}"); fi
+    line=""
+    for ((k = 0; k < n; k++)); do
+      ((k == 2)) && continue
+      line+="\"${fields[k]:-}\","
+    done
+    echo "${line%,}"
   done
 }
 table=$(md)
