@@ -1,0 +1,527 @@
+#include "compare_report.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+
+namespace rpu::app {
+namespace {
+
+namespace fs = std::filesystem;
+namespace IBA = OIIO::ImageBufAlgo;
+using OIIO::ImageBuf;
+using OIIO::ImageSpec;
+using OIIO::ROI;
+using OIIO::TypeDesc;
+
+// ---------------------------------------------------------------------------------------------
+// Input checks
+
+bool usable_name(const std::string& name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '-' || c == '_';
+  });
+}
+
+// Every render has a file-safe, unique name, the size of the first render, and primitive ids
+// the scene knows.
+void check_input(const CompareInput& in) {
+  if (in.renders.empty()) throw Error(in.scene, "compare: no backend render to report");
+  const image::Frame& first = in.renders.front().frame;
+  for (size_t r = 0; r < in.renders.size(); ++r) {
+    const BackendRender& render = in.renders[r];
+    if (!usable_name(render.name))
+      throw Error("backend \"" + render.name + "\"",
+                  "a backend name may hold only letters, digits, '-' and '_' (it names files)");
+    for (size_t s = 0; s < r; ++s)
+      if (in.renders[s].name == render.name)
+        throw Error("backend " + render.name, "rendered twice in one comparison");
+    const image::Frame& f = render.frame;
+    if (f.width <= 0 || f.height <= 0 || f.primitive.size() != static_cast<size_t>(f.width) * f.height)
+      throw Error("backend " + render.name,
+                  fmt::format("malformed frame: {}×{} with {} pixels", f.width, f.height,
+                              f.primitive.size()));
+    if (f.width != first.width || f.height != first.height)
+      throw Error("backend " + render.name,
+                  fmt::format("frame is {}×{} but {} is {}×{}", f.width, f.height,
+                              in.renders.front().name, first.width, first.height));
+    for (int j = 0; j < f.height; ++j)
+      for (int i = 0; i < f.width; ++i) {
+        const auto id = f.primitive[f.index(i, j)];
+        if (id != image::kBackground && (id < 0 || static_cast<size_t>(id) >= in.colors.size()))
+          throw Error(fmt::format("backend {}: pixel ({}, {})", render.name, i, j),
+                      fmt::format("primitive id {} but the scene has {} primitives", id, in.colors.size()));
+      }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// OpenImageIO helpers
+
+// ImageBufAlgo reports failures through the returned buffer.
+ImageBuf checked(ImageBuf buf, std::string_view operation) {
+  if (buf.has_error()) throw Error(std::string("ImageBufAlgo::") + std::string(operation), buf.geterror());
+  return buf;
+}
+
+ImageBuf float_image(int width, int height, int channels, const std::vector<float>& values) {
+  ImageBuf buf(ImageSpec(width, height, channels, TypeDesc::FLOAT));
+  buf.set_pixels(ROI::All(), TypeDesc::FLOAT, values.data());
+  return buf;
+}
+
+// The frame in its exact colours (SCENE.md).
+ImageBuf colour_image(const image::Frame& f, const CompareInput& in) {
+  return float_image(f.width, f.height, 3, image::to_rgb(f, in.colors, in.background));
+}
+
+// The primitive ids as an image OpenImageIO can compare exactly: id + 1 (0 for background) split
+// into its low and high 16 bits, one channel each, so every value is an exact float.
+ImageBuf id_image(const image::Frame& f) {
+  std::vector<float> v(f.primitive.size() * 2);
+  for (size_t k = 0; k < f.primitive.size(); ++k) {
+    const auto shifted = static_cast<std::uint32_t>(f.primitive[k] + 1);
+    v[2 * k] = static_cast<float>(shifted & 0xffffu);
+    v[2 * k + 1] = static_cast<float>(shifted >> 16);
+  }
+  return float_image(f.width, f.height, 2, v);
+}
+
+// 1 where the id image is non-zero in any channel, 0 elsewhere (the values are whole numbers).
+ImageBuf nonzero_mask(const ImageBuf& ids) {
+  return checked(IBA::clamp(checked(IBA::maxchan(ids), "maxchan"), 0.0f, 1.0f), "clamp");
+}
+
+// A one-channel mask repeated into three channels, to weight an RGB image.
+ImageBuf rgb_mask(const ImageBuf& mask) {
+  return checked(IBA::channels(mask, 3, {0, 0, 0}), "channels");
+}
+
+std::array<float, 3> as_float(const scene::Color& c) {
+  return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+}
+
+// The integer enlargement factor for the report (1: shown as is).
+int enlargement(int width, int height) {
+  const int side = std::max(width, height);
+  return side < kEnlargeBelow ? std::max(2, 2 * kEnlargeBelow / side) : 1;
+}
+
+// An image written as <stem>.png, and the file the report shows (an enlarged copy when small).
+struct WrittenImage {
+  std::string file, shown;
+  int shown_width = 0, shown_height = 0;
+};
+
+void write_png(const ImageBuf& buf, const fs::path& path) {
+  if (!buf.write(path.string(), TypeDesc::UINT8))
+    throw Error(path.string(), "cannot write image: " + buf.geterror());
+}
+
+WrittenImage write_image(const ImageBuf& buf, const fs::path& dir, const std::string& stem) {
+  const ImageSpec& spec = buf.spec();
+  WrittenImage w{stem + ".png", stem + ".png", spec.width, spec.height};
+  write_png(buf, dir / w.file);
+  if (const int k = enlargement(spec.width, spec.height); k > 1) {
+    // Nearest neighbour at an integer factor: every source pixel becomes a crisp k×k block.
+    const ROI big(0, spec.width * k, 0, spec.height * k, 0, 1, 0, spec.nchannels);
+    w.shown = fmt::format("{}_x{}.png", stem, k);
+    w.shown_width = spec.width * k;
+    w.shown_height = spec.height * k;
+    write_png(checked(IBA::resample(buf, /*interpolate=*/false, big), "resample"), dir / w.shown);
+  }
+  return w;
+}
+
+// The colour a PNG holds for a linear value v (as image::write_rgb and OIIO write it).
+std::string css_colour(const std::array<float, 3>& c) {
+  const auto byte = [](float v) { return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  return fmt::format("#{:02x}{:02x}{:02x}", byte(c[0]), byte(c[1]), byte(c[2]));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Comparisons
+
+std::string key_name(std::string_view backend) {
+  std::string k(backend);
+  std::replace(k.begin(), k.end(), '-', '_');
+  return k;
+}
+
+struct PairResult {
+  std::string a, b, key;  // key: "<a>_vs_<b>" with '-' as '_'
+  size_t mismatched = 0, only_a = 0, only_b = 0, different_primitive = 0;
+  ImageBuf differ;        // one channel, 1 where the primitive ids differ
+  WrittenImage image;
+};
+
+// Compares two renders, writes diff_<a>_vs_<b>.png: a dimmed where they agree, kHitOnlyInA /
+// kHitOnlyInB where only one has a hit, kDifferentPrimitive where both hit different primitives.
+PairResult compare_pair(const BackendRender& ra, const BackendRender& rb, const CompareInput& in,
+                        const fs::path& dir) {
+  PairResult p;
+  p.a = ra.name;
+  p.b = rb.name;
+  p.key = key_name(ra.name) + "_vs_" + key_name(rb.name);
+  const image::Frame& fa = ra.frame;
+  const image::Frame& fb = rb.frame;
+
+  // The counts, from the frames themselves.
+  p.mismatched = image::count_differing_pixels(fa, fb);
+  for (size_t k = 0; k < fa.primitive.size(); ++k) {
+    const bool ha = fa.primitive[k] != image::kBackground;
+    const bool hb = fb.primitive[k] != image::kBackground;
+    p.only_a += ha && !hb;
+    p.only_b += hb && !ha;
+    p.different_primitive += ha && hb && fa.primitive[k] != fb.primitive[k];
+  }
+
+  // The same through OpenImageIO, which also yields the masks the images are built from.
+  const ImageBuf ids_a = id_image(fa), ids_b = id_image(fb);
+  const IBA::CompareResults cmp = IBA::compare(ids_a, ids_b, 0.5f, 0.5f);
+  if (cmp.nfail != p.mismatched)
+    throw Error("compare " + p.a + " vs " + p.b,
+                fmt::format("ImageBufAlgo::compare finds {} differing pixels, the frames {}",
+                            cmp.nfail, p.mismatched));
+  p.differ = nonzero_mask(checked(IBA::absdiff(ids_a, ids_b), "absdiff"));
+  const ImageBuf hit_a = nonzero_mask(ids_a), hit_b = nonzero_mask(ids_b);
+  const ImageBuf miss_a = checked(IBA::invert(hit_a), "invert");
+  const ImageBuf miss_b = checked(IBA::invert(hit_b), "invert");
+  const ImageBuf only_a = checked(IBA::mul(hit_a, miss_b), "mul");
+  const ImageBuf only_b = checked(IBA::mul(hit_b, miss_a), "mul");
+  const ImageBuf both_differ = checked(IBA::mul(p.differ, checked(IBA::mul(hit_a, hit_b), "mul")), "mul");
+  const ImageBuf agree = checked(IBA::invert(p.differ), "invert");
+
+  // Exactly one of the four masks is 1 at each pixel, so a weighted sum composes the image.
+  const auto paint = [](const ImageBuf& image, const ImageBuf& mask, const scene::Color& colour) {
+    const auto c = as_float(colour);
+    const ImageBuf layer = checked(IBA::mul(rgb_mask(mask), OIIO::cspan<float>(c.data(), c.size())), "mul");
+    return checked(IBA::add(image, layer), "add");
+  };
+  const ImageBuf dimmed = checked(IBA::mul(colour_image(fa, in), kAgreeBrightness), "mul");
+  ImageBuf diff = checked(IBA::mul(dimmed, rgb_mask(agree)), "mul");
+  diff = paint(diff, only_a, kHitOnlyInA);
+  diff = paint(diff, only_b, kHitOnlyInB);
+  diff = paint(diff, both_differ, kDifferentPrimitive);
+  p.image = write_image(diff, dir, fmt::format("diff_{}_vs_{}", p.a, p.b));
+  return p;
+}
+
+// Per pixel, the number of compared pairs that disagree there.
+struct HeatMap {
+  int pairs = 0;                      // P, pairs compared
+  std::vector<size_t> histogram;      // pixels with d = 0..P disagreeing pairs
+  std::vector<std::string> legend;    // CSS colour of d = 0..P
+  WrittenImage image;
+};
+
+// The colour map applied to the heat value. OpenImageIO's maps are linear; encoded to sRGB they
+// give the published colours (inferno: #000004 at 0 to #fcffa4 at 1).
+ImageBuf heat_colours(const ImageBuf& value) {
+  const ImageBuf linear = checked(IBA::color_map(value, 0, kHeatColorMap), "color_map");
+  return checked(IBA::colorconvert(linear, "linear", "sRGB"), "colorconvert");
+}
+
+HeatMap heat_map(const std::vector<PairResult>& pairs, int width, int height, const fs::path& dir) {
+  HeatMap h;
+  h.pairs = static_cast<int>(pairs.size());
+  const ROI roi(0, width, 0, height, 0, 1, 0, 1);
+  ImageBuf count = checked(IBA::zero(roi), "zero");
+  for (const PairResult& p : pairs) count = checked(IBA::add(count, p.differ), "add");
+
+  std::vector<float> d(static_cast<size_t>(width) * height);
+  count.get_pixels(roi, TypeDesc::FLOAT, d.data());
+  h.histogram.assign(static_cast<size_t>(h.pairs) + 1, 0);
+  for (float v : d) ++h.histogram.at(static_cast<size_t>(std::lround(v)));
+
+  // heat_value(d) = (d + [d > 0]) / (P + 1), as in the header.
+  const float scale = 1.0f / static_cast<float>(h.pairs + 1);
+  const ImageBuf value =
+      checked(IBA::mul(checked(IBA::add(count, nonzero_mask(count)), "add"), scale), "mul");
+  h.image = write_image(heat_colours(value), dir, "heatmap");
+
+  // The legend goes through the same colour map.
+  std::vector<float> steps;
+  for (int k = 0; k <= h.pairs; ++k) steps.push_back(static_cast<float>(heat_value(k, h.pairs)));
+  const ImageBuf swatches = heat_colours(float_image(h.pairs + 1, 1, 1, steps));
+  for (int k = 0; k <= h.pairs; ++k) {
+    std::array<float, 3> c{};
+    swatches.getpixel(k, 0, c.data(), 3);
+    h.legend.push_back(css_colour(c));
+  }
+  return h;
+}
+
+// ---------------------------------------------------------------------------------------------
+// report.html
+
+std::string escape(std::string_view text) {
+  std::string s;
+  s.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': s += "&amp;"; break;
+      case '<': s += "&lt;"; break;
+      case '>': s += "&gt;"; break;
+      case '"': s += "&quot;"; break;
+      case '\'': s += "&#39;"; break;
+      default: s += c;
+    }
+  }
+  return s;
+}
+
+// A JSON value as table text: strings bare, null as "—", everything else as JSON.
+std::string cell(const nlohmann::json& v) {
+  if (v.is_null()) return "—";
+  if (v.is_string()) return escape(v.get<std::string>());
+  if (v.is_number_float()) return escape(fmt::format("{:.6g}", v.get<double>()));
+  return escape(v.dump());
+}
+
+// Rows "a.b.c | value" for a nested JSON object (arrays stay whole).
+void flatten(const nlohmann::json& v, const std::string& prefix,
+             std::vector<std::pair<std::string, nlohmann::json>>& rows) {
+  if (v.is_object() && !v.empty()) {
+    for (const auto& [key, value] : v.items())
+      flatten(value, prefix.empty() ? key : prefix + "." + key, rows);
+  } else {
+    rows.emplace_back(prefix, v);
+  }
+}
+
+std::string key_value_table(const nlohmann::json& v, std::string_view when_empty) {
+  if (v.is_null() || (v.is_object() && v.empty())) return fmt::format("<p>{}</p>\n", escape(when_empty));
+  std::vector<std::pair<std::string, nlohmann::json>> rows;
+  flatten(v, "", rows);
+  std::string html = "<table>\n<tr><th>parameter</th><th>value</th></tr>\n";
+  for (const auto& [key, value] : rows)
+    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", escape(key), cell(value));
+  return html + "</table>\n";
+}
+
+std::string figure(const WrittenImage& w, const std::string& caption_html) {
+  return fmt::format(
+      "<figure><a href=\"{0}\"><img src=\"{1}\" width=\"{2}\" height=\"{3}\" alt=\"{4}\"></a>"
+      "<figcaption>{5}</figcaption></figure>\n",
+      escape(w.file), escape(w.shown), w.shown_width, w.shown_height, escape(w.file), caption_html);
+}
+
+std::string swatch(const std::string& css) {
+  return fmt::format("<span class=\"swatch\" style=\"background:{}\"></span>", css);
+}
+
+constexpr std::string_view kStyle = R"(
+body { font-family: system-ui, sans-serif; margin: 1.5em; color: #222; }
+.banner { font-size: 1.6em; font-weight: bold; padding: .5em 1em; border-radius: 6px; color: #fff; }
+.pass { background: #1a7f37; } .fail { background: #c62828; } .skip { background: #6e6e6e; }
+.gallery { display: flex; flex-wrap: wrap; gap: 1.2em; align-items: flex-start; }
+figure { margin: 0; max-width: 100%; }
+figure img { display: block; max-width: 100%; height: auto; border: 1px solid #bbb; }
+figcaption { font-size: .9em; margin-top: .3em; }
+table { border-collapse: collapse; margin: .5em 0 1em; }
+th, td { border: 1px solid #ccc; padding: .2em .6em; text-align: left; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; }
+.swatch { display: inline-block; width: 1em; height: 1em; border: 1px solid #888;
+          vertical-align: middle; margin-right: .3em; }
+pre { background: #f4f4f4; padding: .6em; overflow-x: auto; }
+)";
+
+struct ReportParts {
+  const CompareInput& in;
+  const nlohmann::json& metrics;
+  const std::vector<WrittenImage>& renders;  // parallel to in.renders
+  const std::vector<PairResult>& pairs;
+  const HeatMap& heat;
+};
+
+std::string banner(const CompareInput& in, const nlohmann::json& metrics) {
+  const auto has = [&](std::string_view name) {
+    return std::any_of(in.renders.begin(), in.renders.end(), [&](const auto& r) { return r.name == name; });
+  };
+  if (!has("rtl")) return "<div class=\"banner skip\">rtl not run</div>\n";
+  if (!has("ref")) return "<div class=\"banner skip\">rtl not checked: ref not run</div>\n";
+  const auto differ = metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>();
+  const auto pixels = metrics["pixels"].get<size_t>();
+  if (differ == 0)
+    return fmt::format("<div class=\"banner pass\">PASS: rtl == ref on all {} pixels</div>\n", pixels);
+  return fmt::format("<div class=\"banner fail\">FAIL: rtl differs from ref on {} of {} pixels</div>\n",
+                     differ, pixels);
+}
+
+std::string report_html(const ReportParts& r) {
+  const CompareInput& in = r.in;
+  const nlohmann::json& m = r.metrics;
+  std::string html = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<title>rpu compare: {0}</title>\n<style>{1}</style>\n</head>\n<body>\n"
+      "<h1>rpu compare: {0}</h1>\n<p>{2}×{3} = {4} pixels.</p>\n",
+      escape(in.scene), kStyle, m["width"].get<int>(), m["height"].get<int>(), m["pixels"].get<size_t>());
+  html += banner(in, m);
+
+  html += "<h2>Renders</h2>\n<div class=\"gallery\">\n";
+  for (size_t k = 0; k < in.renders.size(); ++k) {
+    const BackendRender& b = in.renders[k];
+    html += figure(r.renders[k], fmt::format("<b>{}</b>: {} hit pixels, {:.3f} s", escape(b.name),
+                                             b.frame.hit_pixels(), b.seconds));
+  }
+  html += "</div>\n";
+
+  html += "<h2>Differences</h2>\n";
+  if (r.pairs.empty()) {
+    html += "<p>No pair of backends to compare.</p>\n";
+  } else {
+    html += fmt::format(
+        "<p>In the image of <i>a</i> vs <i>b</i>: pixels where both agree show <i>a</i> at {:.0f} % "
+        "brightness; {}hit only in <i>a</i>; {}hit only in <i>b</i>; {}both hit, different "
+        "primitive.</p>\n<div class=\"gallery\">\n",
+        100.0f * kAgreeBrightness, swatch(css_colour(as_float(kHitOnlyInA))),
+        swatch(css_colour(as_float(kHitOnlyInB))), swatch(css_colour(as_float(kDifferentPrimitive))));
+    for (const PairResult& p : r.pairs)
+      html += figure(p.image, fmt::format("<b>{0}</b> vs <b>{1}</b>: {2} pixels differ<br>"
+                                          "only {0}: {3}, only {1}: {4}, different primitive: {5}",
+                                          escape(p.a), escape(p.b), p.mismatched, p.only_a, p.only_b,
+                                          p.different_primitive));
+    html += "</div>\n";
+  }
+
+  html += fmt::format(
+      "<h2>Disagreement heat map</h2>\n<p>Per pixel, how many of the {} compared pairs disagree "
+      "(colour map \"{}\"): ",
+      r.heat.pairs, escape(kHeatColorMap));
+  for (int d = 0; d <= r.heat.pairs; ++d)
+    html += fmt::format("{}{} ({} px){}", swatch(r.heat.legend[static_cast<size_t>(d)]), d,
+                        r.heat.histogram[static_cast<size_t>(d)], d < r.heat.pairs ? ", " : ".");
+  std::string compared;
+  for (const PairResult& p : r.pairs) compared += (compared.empty() ? "" : ", ") + p.a + " vs " + p.b;
+  html += "</p>\n<div class=\"gallery\">\n" +
+          figure(r.heat.image, "pairs: " + escape(compared.empty() ? "none" : compared)) + "</div>\n";
+
+  html += "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>value</th></tr>\n";
+  for (const char* key : {"pixels", "rtl_vs_ref_mismatched_pixels", "ref_vs_float_ip_mismatched_pixels",
+                          "ref_vs_float_mismatched_pixels", "float_ip_vs_float_mismatched_pixels",
+                          "cycles", "pairs", "latency_cycles", "rtl_equals_ref"})
+    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", key, cell(m[key]));
+  html += "</table>\n<table>\n<tr><th>backend</th><th>hit pixels</th><th>seconds</th></tr>\n";
+  for (const BackendRender& b : in.renders)
+    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td></tr>\n",
+                        escape(b.name), b.frame.hit_pixels(), b.seconds);
+  html += "</table>\n";
+  if (!r.pairs.empty()) {
+    html += "<table>\n<tr><th>a vs b</th><th>differ</th><th>hit only in a</th><th>hit only in b</th>"
+            "<th>different primitive</th></tr>\n";
+    for (const PairResult& p : r.pairs)
+      html += fmt::format(
+          "<tr><td>{} vs {}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+          "<td class=\"num\">{}</td><td class=\"num\">{}</td></tr>\n",
+          escape(p.a), escape(p.b), p.mismatched, p.only_a, p.only_b, p.different_primitive);
+    html += "</table>\n";
+  }
+
+  html += "<h2>Hardware configuration</h2>\n" + key_value_table(in.config, "No configuration given.");
+  html += "<h2>RTL co-simulation</h2>\n" + key_value_table(in.rtl, "The RTL was not simulated.");
+  html += "<h2>Mismatch records</h2>\n";
+  if (in.mismatch_lines.empty()) {
+    html += "<p>None recorded.</p>\n";
+  } else {
+    html += "<pre>";
+    for (const std::string& line : in.mismatch_lines) html += escape(line) + "\n";
+    html += "</pre>\n";
+  }
+  return html + "</body>\n</html>\n";
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw Error(path.string(), std::string("cannot open for writing: ") + std::strerror(errno));
+  out << text;
+  out.close();
+  if (!out) throw Error(path.string(), "cannot write the file");
+}
+
+}  // namespace
+
+CompareSummary write_compare_report(const CompareInput& in, const std::string& out_dir) {
+  check_input(in);
+  const fs::path dir = out_dir.empty() ? fs::path(".") : fs::path(out_dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error(dir.string(), "cannot create the output directory: " + ec.message());
+  if (!fs::is_directory(dir)) throw Error(dir.string(), "exists and is not a directory");
+
+  const image::Frame& first = in.renders.front().frame;
+  const auto find = [&](std::string_view name) -> const BackendRender* {
+    for (const auto& r : in.renders)
+      if (r.name == name) return &r;
+    return nullptr;
+  };
+
+  nlohmann::json metrics = {{"scene", in.scene},
+                            {"width", first.width},
+                            {"height", first.height},
+                            {"pixels", first.primitive.size()},
+                            {"config", in.config},
+                            {"rtl", in.rtl},
+                            {"mismatch_records", in.mismatch_lines}};
+
+  std::vector<WrittenImage> render_images;
+  for (const BackendRender& b : in.renders) {
+    render_images.push_back(write_image(colour_image(b.frame, in), dir, b.name));
+    metrics["backends"][b.name] = {{"hit_pixels", b.frame.hit_pixels()},
+                                   {"seconds", b.seconds},
+                                   {"image", render_images.back().file}};
+  }
+
+  std::vector<PairResult> pairs;
+  for (const auto& [a, b] : kComparedPairs) {
+    const std::string key = key_name(a) + "_vs_" + key_name(b);
+    const BackendRender* ra = find(a);
+    const BackendRender* rb = find(b);
+    if (!ra || !rb) {
+      metrics[key + "_mismatched_pixels"] = nullptr;
+      metrics["comparisons"][key] = nullptr;
+      continue;
+    }
+    PairResult p = compare_pair(*ra, *rb, in, dir);
+    metrics[key + "_mismatched_pixels"] = p.mismatched;
+    metrics["comparisons"][key] = {{"mismatched_pixels", p.mismatched},
+                                   {"hit_only_in_" + key_name(a), p.only_a},
+                                   {"hit_only_in_" + key_name(b), p.only_b},
+                                   {"different_primitive", p.different_primitive},
+                                   {"image", p.image.file}};
+    pairs.push_back(std::move(p));
+  }
+
+  for (const char* stat : {"cycles", "pairs", "latency_cycles"})
+    metrics[stat] = in.rtl.is_object() && in.rtl.contains(stat) ? in.rtl[stat] : nlohmann::json();
+
+  const bool checked_rtl = find("rtl") && find("ref");
+  const bool rtl_equals_ref = checked_rtl && metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>() == 0;
+  metrics["rtl_equals_ref"] = checked_rtl ? nlohmann::json(rtl_equals_ref) : nlohmann::json();
+
+  const HeatMap heat = heat_map(pairs, first.width, first.height, dir);
+  nlohmann::json compared = nlohmann::json::array();
+  for (const PairResult& p : pairs) compared.push_back(p.key);
+  metrics["heatmap"] = {{"image", heat.image.file},
+                        {"color_map", kHeatColorMap},
+                        {"pairs_compared", compared},
+                        {"pixels_by_disagreeing_pairs", heat.histogram}};
+
+  write_text(dir / "metrics.json", metrics.dump(2) + "\n");
+  write_text(dir / "report.html", report_html({in, metrics, render_images, pairs, heat}));
+  return {metrics, rtl_equals_ref};
+}
+
+}  // namespace rpu::app

@@ -1,0 +1,83 @@
+// The report of `rpu compare` (SCENE.md "Command line"): the backends' images, their pairwise
+// difference images, a disagreement heat map, metrics.json and a self-contained report.html.
+// Rendering the images is the caller's business; this module only compares and writes.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "image/frame.h"
+#include "scene/scene.h"
+
+namespace rpu::app {
+
+// One backend's image.
+struct BackendRender {
+  std::string name;    // "float", "float-ip", "ref", "rtl" (letters, digits, '-', '_' only)
+  image::Frame frame;  // per pixel primitive id (image::kBackground = -1) and depth
+  double seconds = 0;  // wall time of the render
+};
+
+// Everything the report shows.
+struct CompareInput {
+  std::string scene;                   // scene argument as given (file or builtin:NAME)
+  std::vector<scene::Color> colors;    // per primitive id
+  scene::Color background;
+  std::vector<BackendRender> renders;  // any subset; rtl and ref normally present
+  nlohmann::json config;               // effective hardware parameters (a table in the report)
+  nlohmann::json rtl;  // co-simulation statistics: cycles, pairs, latency_cycles, stall_cycles,
+                       // items_per_cycle, sim_seconds, harness ("c++"/"systemc"), ...; may be null
+  std::vector<std::string> mismatch_lines;  // human-readable mismatch records (first few)
+};
+
+struct CompareSummary {
+  nlohmann::json metrics;  // what metrics.json holds
+  bool rtl_equals_ref;     // both rtl and ref rendered and equal on every pixel; false otherwise
+};
+
+// The compared pairs, in report order: (a, b) gives diff_<a>_vs_<b>.png and the metrics key
+// <a>_vs_<b>_mismatched_pixels ('-' written '_').
+inline constexpr std::array<std::array<std::string_view, 2>, 4> kComparedPairs = {{
+    {"rtl", "ref"}, {"ref", "float-ip"}, {"ref", "float"}, {"float-ip", "float"}}};
+
+// Difference image colours (linear RGB, written to 8 bit as round(255·c)). Where a and b agree
+// the difference image shows a at kAgreeBrightness of its colour.
+inline constexpr float kAgreeBrightness = 0.25f;
+inline constexpr scene::Color kHitOnlyInA = {1.0, 0.4, 0.0};         // orange
+inline constexpr scene::Color kHitOnlyInB = {0.0, 0.6, 1.0};         // azure
+inline constexpr scene::Color kDifferentPrimitive = {1.0, 0.0, 1.0}; // magenta
+
+// The heat map shows, per pixel, heat_value(d, P) through this OpenImageIO colour map, where d is
+// the number of compared pairs that disagree there and P the number of pairs compared (both
+// renders present), encoded to sRGB so the PNG shows the map's published colours: near-black
+// (#000004) where all agree, pale yellow (#fcffa4) where every pair disagrees.
+inline constexpr std::string_view kHeatColorMap = "inferno";
+
+// Where no pair disagrees 0; otherwise (d + 1) / (P + 1), which keeps a single disagreeing pair
+// (0.4 of four) well clear of the map's near-black low end.
+constexpr double heat_value(int d, int P) { return d == 0 ? 0.0 : (d + 1.0) / (P + 1.0); }
+
+// Images whose larger side is below this are also written enlarged (nearest neighbour, integer
+// factor k = max(2, 512 / side), file <name>_x<k>.png) and the report shows the enlarged copy.
+inline constexpr int kEnlargeBelow = 256;
+
+// metrics.json (and CompareSummary::metrics) holds: scene, width, height, pixels;
+// <a>_vs_<b>_mismatched_pixels for the four pairs (null when a render is missing); cycles, pairs,
+// latency_cycles copied from `rtl` (null when absent); rtl_equals_ref (null unless rtl and ref
+// both rendered); backends.<name>.{hit_pixels, seconds, image}; comparisons.<a>_vs_<b>.
+// {mismatched_pixels, hit_only_in_<a>, hit_only_in_<b>, different_primitive, image} (or null);
+// heatmap.{image, color_map, pairs_compared, pixels_by_disagreeing_pairs[d]}; config; rtl;
+// mismatch_records. A pixel mismatches when its primitive id differs
+// (image::count_differing_pixels).
+//
+// Writes into out_dir (created if missing): <backend>.png for every render; diff_<a>_vs_<b>.png
+// for each of kComparedPairs whose both renders exist; heatmap.png; metrics.json; report.html.
+// Throws rpu::Error naming the path on I/O failure, and naming the backend on inconsistent input
+// (frames of different sizes, unknown primitive ids, repeated or unusable names).
+CompareSummary write_compare_report(const CompareInput& in, const std::string& out_dir);
+
+}  // namespace rpu::app
