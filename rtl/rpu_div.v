@@ -61,11 +61,13 @@ module rpu_div #(
     end
   endgenerate
 
-  // Registered state after stage s lives in slot s (s = 0 .. QuotW-1), flattened.
-  reg [QuotW*DenW-1:0]  rem_q;   // partial remainder (< den)
-  reg [QuotW*DenW-1:0]  den_q;   // divisor
-  reg [QuotW*QuotW-1:0] sh_q;    // remaining dividend bits (top) and quotient bits (bottom)
-  reg [QuotW*TagW-1:0]  tag_q;
+  // Registered state after stage s lives in slot s (s = 0 .. QuotW-1), flattened. split_var
+  // lets Verilator keep each slot a variable of its own (else every stage's write copies the
+  // whole flattened vector: 20× slower simulation); synthesis ignores the comment.
+  reg [QuotW*DenW-1:0]  rem_q /* verilator split_var */;  // partial remainder (< den)
+  reg [QuotW*DenW-1:0]  den_q /* verilator split_var */;  // divisor
+  reg [QuotW*QuotW-1:0] sh_q  /* verilator split_var */;  // dividend bits left (top), quotient (bottom)
+  reg [QuotW*TagW-1:0]  tag_q /* verilator split_var */;
   reg [QuotW-1:0]       valid_q;
 
   genvar s;

@@ -121,9 +121,10 @@ module rpu_ip #(
   generate
     if (Unrolled != 0) begin : g_unrolled
       assign ready_o = 1'b1;
-      wire [K:0]          v;
-      wire [(K+1)*StW-1:0] st;
-      wire [(K+1)*BunW-1:0] bun;
+      // split_var: one Verilator variable per stage's slice (see rpu_sqrt).
+      wire [K:0]          v   /* verilator split_var */;
+      wire [(K+1)*StW-1:0] st  /* verilator split_var */;
+      wire [(K+1)*BunW-1:0] bun /* verilator split_var */;
       assign v[0] = s_valid;
       assign st[0 +: StW] = s_state;
       assign bun[0 +: BunW] = s_bundle;

@@ -136,7 +136,12 @@ module rpu_ip_step #(
     best = {1'b0, md[0]} + {1'b0, md[1]};
     eta  = {N1{1'b0}};
     for (q = 1; q < J; q = q + 1) begin
+`ifdef RPU_FAULT_ARGMIN_TIE
+      // Deliberate fault for the co-simulation checker's own test: the last minimum wins.
+      if (({1'b0, md[q]} + {1'b0, md[q+1]}) <= best) begin
+`else
       if (({1'b0, md[q]} + {1'b0, md[q+1]}) < best) begin
+`endif
         best = {1'b0, md[q]} + {1'b0, md[q+1]};
         eta  = q[N1-1:0];
       end

@@ -48,11 +48,13 @@ module rpu_sqrt #(
     end
   endgenerate
 
-  // Registered state after stage s lives in slot s (s = 0 .. Stages-1), flattened.
-  reg [Stages*PadW-1:0]   rad_q;
-  reg [Stages*RemW-1:0]   rem_q;
-  reg [Stages*Stages-1:0] root_q;
-  reg [Stages*TagW-1:0]   tag_q;
+  // Registered state after stage s lives in slot s (s = 0 .. Stages-1), flattened. split_var
+  // lets Verilator keep each slot a variable of its own (else every stage's write copies the
+  // whole flattened vector: 20× slower simulation); synthesis ignores the comment.
+  reg [Stages*PadW-1:0]   rad_q  /* verilator split_var */;
+  reg [Stages*RemW-1:0]   rem_q  /* verilator split_var */;
+  reg [Stages*Stages-1:0] root_q /* verilator split_var */;
+  reg [Stages*TagW-1:0]   tag_q  /* verilator split_var */;
   reg [Stages-1:0]        valid_q;
 
   genvar s;

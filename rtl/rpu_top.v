@@ -1,13 +1,21 @@
-// rpu_top: the ray-processing unit for curves. Twin: rpu::ref::process_curve_pair per work item.
+// rpu_top: the ray-processing unit for spatial curves and vector textures. Twins, per work item:
+// rpu::ref::process_curve_pair (curve segment) or ray_plane_unit + texture_unit (texture
+// segment); per pixel: rpu::ref::Resolve.
 //   descriptors: the camera (cam_we_i) and up to 2^SegAddrW segment descriptors (seg_we_i) are
-//     written before a frame (formats: docs/fixed-point.md, packing: docs/rtl.md);
-//   work items: (id, pixel i, j, segment) on a valid/ready stream, one per cycle;
-//   results: (id, i, j, segment, primitive, pred_1, hit, depth, τ_K, t, X, overflow) on a
-//     valid/ready stream, in input order.
-// Inside: segment RAM read → rpu_ray_gen → rpu_sphere → rpu_ip → rpu_capture → output FIFO.
-// The arithmetic pipeline never stalls: a work item is only accepted while fewer than
-// 2^FifoLog2 items are in flight or waiting in the output FIFO (a credit count of registers),
-// so the FIFO cannot overflow and no combinational ready path crosses the pipeline.
+//     written before a frame (formats: docs/fixed-point.md, packing: docs/rtl.md); a
+//     descriptor's top bit says texture (1) or curve (0);
+//   work items: (id, pixel i, j, segment, last) on a valid/ready stream, one per cycle; `last`
+//     marks a pixel's last work item (items of one pixel are consecutive);
+//   results: (id, i, j, segment, last, texture, primitive, pred_1, hit, depth, τ_K, t, X,
+//     overflow) on a valid/ready stream, in input order;
+//   pixels: (i, j, hit, depth, primitive) on a valid/ready stream, one per pixel, from
+//     rpu_resolve fed by the result stream (a result is handed over only when both take it).
+// Inside: segment RAM read → rpu_ray_gen → curve: rpu_sphere → rpu_ip → rpu_capture → curve
+// FIFO; texture: rpu_ray_plane → rpu_texture → texture FIFO. An order FIFO of one bit per item
+// merges the two in input order; the merged stream feeds the result port and rpu_resolve.
+// The arithmetic pipelines never stall: a work item is only accepted while fewer than
+// 2^FifoLog2 items are in flight or waiting in the output FIFOs (a credit count of registers),
+// so no FIFO can overflow and no combinational ready path crosses the pipeline.
 `default_nettype none
 
 module rpu_top #(
@@ -25,7 +33,7 @@ module rpu_top #(
   parameter integer SegAddrW = 12,  // log2 of the segment descriptor capacity (1..16)
   parameter integer IdxW     = 14,  // pixel index width (1..14)
   parameter integer IdW      = 32,  // width of the caller's work-item id (1..64)
-  parameter integer PrimW    = 16,  // primitive id width (1..32)
+  parameter integer PrimW    = 16,  // primitive id width (1..31)
   parameter integer FifoLog2 = 10,  // log2 of the items in flight + waiting (2..12)
   // Derived (do not override).
   parameter integer VgW   = 4 + DirFrac + 14,
@@ -39,7 +47,7 @@ module rpu_top #(
   parameter integer XW    = CoordW + 3,
   parameter integer GdW   = 2 + HW + CoordW + TFrac + 3*UW,           // one guide descriptor
   parameter integer CamW  = 9*VgW + 12*EgW + 3*CoordW,                 // camera descriptor
-  parameter integer SegW  = PrimW + 3*CoordW + 3*DW + 3*CoordW + R2W + L2W + InvW + 7 + 2*GdW,
+  parameter integer SegW  = 1 + PrimW + 3*CoordW + 3*DW + 3*CoordW + R2W + L2W + InvW + 7 + 2*GdW,
   parameter integer DepthW = CoordW + 4 + EgW + 2
 ) (
   input  wire                clk_i,
@@ -49,7 +57,8 @@ module rpu_top #(
   input  wire [CamW-1:0]     cam_data_i,   // {v0, dx, dy, el0, et0, sw, w, eye}
   input  wire                seg_we_i,
   input  wire [SegAddrW-1:0] seg_addr_i,
-  input  wire [SegW-1:0]     seg_data_i,   // {prim, p1, d, c0, R2, L2, inv_m, inv_s, g1, g2}
+  input  wire [SegW-1:0]     seg_data_i,   // {tex, prim, p1, d, c0, R2 | w0_2, L2, inv_m, inv_s,
+                                           //  g1, g2}; a texture's c0 is unused, R2 holds w0_2
   // Work items.
   input  wire                item_valid_i,
   output wire                item_ready_o,
@@ -57,6 +66,7 @@ module rpu_top #(
   input  wire [IdxW-1:0]     item_i_i,
   input  wire [IdxW-1:0]     item_j_i,
   input  wire [SegAddrW-1:0] item_seg_i,
+  input  wire                item_last_i,  // the last work item of its pixel
   // Results.
   output wire                res_valid_o,
   input  wire                res_ready_i,
@@ -64,6 +74,8 @@ module rpu_top #(
   output wire [IdxW-1:0]     res_i_o,
   output wire [IdxW-1:0]     res_j_o,
   output wire [SegAddrW-1:0] res_seg_o,
+  output wire                res_last_o,
+  output wire                res_tex_o,    // a texture item (pred_1: the ray meets the plane)
   output wire [PrimW-1:0]    res_prim_o,
   output wire                res_pred1_o,
   output wire                res_hit_o,
@@ -71,18 +83,29 @@ module rpu_top #(
   output wire [N-1:0]        res_tau_o,
   output wire [TW-1:0]       res_t_o,
   output wire [3*XW-1:0]     res_x_o,
-  output wire                res_ovf_o
+  output wire                res_ovf_o,
+  // Pixels.
+  output wire                pix_valid_o,
+  input  wire                pix_ready_i,
+  output wire [IdxW-1:0]     pix_i_o,
+  output wire [IdxW-1:0]     pix_j_o,
+  output wire                pix_hit_o,
+  output wire [DepthW-1:0]   pix_depth_o,  // 0 without a hit
+  output wire [PrimW-1:0]    pix_prim_o    // 0 without a hit
 );
   localparam integer EoW  = EgW + IdxW + 1;   // rpu_ray_gen's edge outputs
   localparam integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8;
   localparam integer StW  = N + TW + 3*XW + 2*MdW;
-  localparam integer ItW  = IdW + 2*IdxW + SegAddrW;  // the work item's own fields
+  localparam integer ItW  = 1 + IdW + 2*IdxW + SegAddrW;  // the work item: {last, id, i, j, seg}
+  localparam integer SbW  = SegW - 1;                 // a descriptor without its texture bit
+  localparam integer W02W = 2 * CoordW + 1;           // w0_2 (in the R2 field, R2W bits)
   localparam integer EdgW = 12 * EgW;                 // four edge vectors, Q(4.FE+14)
 
   initial begin
     if (SegAddrW < 1 || SegAddrW > 16) $fatal(1, "rpu_top: SegAddrW must be in 1..16");
     if (IdxW < 1 || IdxW > 14) $fatal(1, "rpu_top: IdxW must be in 1..14");
     if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_top: FifoLog2 must be in 2..12");
+    if (PrimW < 1 || PrimW > 31) $fatal(1, "rpu_top: PrimW must be in 1..31");
   end
 
   // ---- descriptor storage ----
@@ -121,7 +144,7 @@ module rpu_top #(
     else         v0_q <= accept;
   end
   always @(posedge clk_i) begin
-    item_q <= {item_id_i, item_i_i, item_j_i, item_seg_i};
+    item_q <= {item_last_i, item_id_i, item_i_i, item_j_i, item_seg_i};
     seg_q  <= seg_mem[item_seg_i];
   end
 
@@ -157,13 +180,14 @@ module rpu_top #(
   // Segment descriptor fields.
   wire [SegW-1:0]     sd    = rg_tag[SegW-1:0];
   wire [ItW-1:0]      rg_it = rg_tag[ItW+SegW-1 -: ItW];
-  wire [PrimW-1:0]    sd_prim = sd[SegW-1 -: PrimW];
-  wire [3*CoordW-1:0] sd_p1   = sd[SegW-PrimW-1 -: 3*CoordW];
-  wire [3*DW-1:0]     sd_d    = sd[SegW-PrimW-3*CoordW-1 -: 3*DW];
-  wire [3*CoordW-1:0] sd_c0   = sd[SegW-PrimW-3*CoordW-3*DW-1 -: 3*CoordW];
-  wire [R2W-1:0]      sd_r2   = sd[SegW-PrimW-6*CoordW-3*DW-1 -: R2W];
-  wire [L2W-1:0]      sd_l2   = sd[SegW-PrimW-6*CoordW-3*DW-R2W-1 -: L2W];
-  wire [InvW-1:0]     sd_invm = sd[SegW-PrimW-6*CoordW-3*DW-R2W-L2W-1 -: InvW];
+  wire                sd_tex  = sd[SegW-1];
+  wire [PrimW-1:0]    sd_prim = sd[SbW-1 -: PrimW];
+  wire [3*CoordW-1:0] sd_p1   = sd[SbW-PrimW-1 -: 3*CoordW];
+  wire [3*DW-1:0]     sd_d    = sd[SbW-PrimW-3*CoordW-1 -: 3*DW];
+  wire [3*CoordW-1:0] sd_c0   = sd[SbW-PrimW-3*CoordW-3*DW-1 -: 3*CoordW];
+  wire [R2W-1:0]      sd_r2   = sd[SbW-PrimW-6*CoordW-3*DW-1 -: R2W];
+  wire [L2W-1:0]      sd_l2   = sd[SbW-PrimW-6*CoordW-3*DW-R2W-1 -: L2W];
+  wire [InvW-1:0]     sd_invm = sd[SbW-PrimW-6*CoordW-3*DW-R2W-L2W-1 -: InvW];
   wire [6:0]          sd_invs = sd[2*GdW+6 -: 7];
   wire [2*GdW-1:0]    sd_g    = sd[2*GdW-1:0];
 
@@ -178,7 +202,8 @@ module rpu_top #(
   wire [SphTagW-1:0] sp_tag;
   rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
                .TagW(SphTagW)) u_sphere (
-    .clk_i, .rst_ni, .valid_i(rg_valid), .eye_i(cam_eye), .vhat_i(rg_vhat), .c0_i(sd_c0),
+    .clk_i, .rst_ni, .valid_i(rg_valid && !sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
+    .c0_i(sd_c0),
     .r2_i(sd_r2), .p1_i(sd_p1), .d_i(sd_d), .inv_m_i(sd_invm), .inv_s_i(sd_invs),
     .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_g, rg_edges}),
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
@@ -243,28 +268,109 @@ module rpu_top #(
   wire unused_cp = ^{cp_tok_unused, cp_signs_unused};
   wire c_pred1 = cp_tag[CapTagW-ItW-PrimW-1];
 
-  // ---- output FIFO ----
-  localparam integer ResW = CapTagW + 1 + DepthW;
-  reg [ResW-1:0]    fifo_q [0:Depth-1];
-  reg [FifoLog2:0]  wr_q, rd_q;
-  wire [ResW-1:0]   res_in = {cp_tag, c_pred1 & cp_hit,
-                              c_pred1 ? cp_depth : {DepthW{1'b0}}};
+  // ---- texture path: ray/plane point, then the coverage test ----
+  localparam integer TxDescW = PrimW + 3*CoordW + 3*DW + L2W + InvW + 7 + 2*GdW + W02W;
+  wire             rp_valid, rp_p0_valid;
+  wire [3*CoordW-1:0] rp_p0;
+  wire [DepthW-1:0] rp_depth;
+  wire [ItW+TxDescW-1:0] rp_tag;
+  rpu_ray_plane #(.CoordW(CoordW), .DirFrac(DirFrac), .EdgeFrac(EdgeFrac),
+                  .TagW(ItW + TxDescW)) u_ray_plane (
+    .clk_i, .rst_ni, .valid_i(rg_valid && sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
+    .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2}),
+    .valid_o(rp_valid), .p0_valid_o(rp_p0_valid), .p0_o(rp_p0), .depth_o(rp_depth),
+    .tag_o(rp_tag));
+  wire [ItW-1:0]      x_it   = rp_tag[ItW+TxDescW-1 -: ItW];
+  wire [PrimW-1:0]    x_prim = rp_tag[TxDescW-1 -: PrimW];
+  wire [3*CoordW-1:0] x_p1   = rp_tag[TxDescW-PrimW-1 -: 3*CoordW];
+  wire [3*DW-1:0]     x_d    = rp_tag[TxDescW-PrimW-3*CoordW-1 -: 3*DW];
+  wire [L2W-1:0]      x_l2   = rp_tag[TxDescW-PrimW-3*CoordW-3*DW-1 -: L2W];
+  wire [InvW-1:0]     x_invm = rp_tag[W02W+2*GdW+7+InvW-1 -: InvW];
+  wire [6:0]          x_invs = rp_tag[W02W+2*GdW+6 -: 7];
+  wire [GdW-1:0]      x_g1   = rp_tag[W02W+2*GdW-1 -: GdW];
+  wire [GdW-1:0]      x_g2   = rp_tag[W02W+GdW-1 -: GdW];
+  wire [W02W-1:0]     x_w02  = rp_tag[W02W-1:0];
+
+  localparam integer TxTagW = ItW + PrimW + 1 + DepthW;
+  wire             tx_valid, tx_covers, tx_ovf, tx_pr1_unused, tx_pr2_unused, tx_pr3_unused;
+  wire [TW-1:0]    tx_t;
+  wire [3*XW-1:0]  tx_x;
+  wire [TxTagW-1:0] tx_tag;
+  rpu_texture #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .InvW(InvW),
+                .SqrtW(SqrtW), .TagW(TxTagW)) u_texture (
+    .clk_i, .rst_ni, .valid_i(rp_valid), .p0_i(rp_p0), .p1_i(x_p1), .d_i(x_d), .l2_i(x_l2),
+    .inv_m_i(x_invm), .inv_s_i(x_invs),
+    .mode1_i(x_g1[GdW-1 -: 2]), .h1_i(x_g1[GdW-3 -: HW]), .a1_i(x_g1[GdW-HW-3 -: CoordW]),
+    .b1_i(x_g1[3*UW+TFrac-1 -: TFrac]), .u1_i(x_g1[3*UW-1:0]),
+    .mode2_i(x_g2[GdW-1 -: 2]), .h2_i(x_g2[GdW-3 -: HW]), .a2_i(x_g2[GdW-HW-3 -: CoordW]),
+    .b2_i(x_g2[3*UW+TFrac-1 -: TFrac]), .u2_i(x_g2[3*UW-1:0]), .w0_2_i(x_w02),
+    .tag_i({x_it, x_prim, rp_p0_valid, rp_depth}),
+    .valid_o(tx_valid), .pr1_o(tx_pr1_unused), .pr2_o(tx_pr2_unused), .pr3_o(tx_pr3_unused),
+    .covers_o(tx_covers), .t_o(tx_t), .x_o(tx_x), .ovf_o(tx_ovf), .tag_o(tx_tag));
+  wire unused_tx = ^{tx_pr1_unused, tx_pr2_unused, tx_pr3_unused};
+  wire [ItW-1:0]    t_it    = tx_tag[TxTagW-1 -: ItW];
+  wire [PrimW-1:0]  t_prim  = tx_tag[TxTagW-ItW-1 -: PrimW];
+  wire              t_p0ok  = tx_tag[DepthW];
+  wire [DepthW-1:0] t_depth = tx_tag[DepthW-1:0];
+
+  // ---- output FIFOs: curve and texture results, merged in input order ----
+  // Result record: {item, texture, primitive, pred_1, ovf, τ, t, X, hit, depth}.
+  localparam integer ResW = ItW + 1 + PrimW + 2 + N + TW + 3*XW + 1 + DepthW;
+  wire [ResW-1:0] cres = {cp_tag[CapTagW-1 -: ItW], 1'b0, cp_tag[CapTagW-ItW-1:0],
+                          c_pred1 & cp_hit, c_pred1 ? cp_depth : {DepthW{1'b0}}};
+  // As the model: a ray that misses the plane (or leaves the range) tests nothing: the result
+  // is all zero; otherwise covers, t̂, X, the unit's overflow bit, and the ray/plane depth.
+  wire [ResW-1:0] tres = {t_it, 1'b1, t_prim, t_p0ok, t_p0ok & tx_ovf, {N{1'b0}},
+                        t_p0ok ? tx_t : {TW{1'b0}}, t_p0ok ? tx_x : {3*XW{1'b0}},
+                        t_p0ok & tx_covers, t_depth};
+
+  reg  [ResW-1:0]   cfifo_q [0:Depth-1];
+  reg  [ResW-1:0]   tfifo_q [0:Depth-1];
+  reg               ofifo_q [0:Depth-1];   // per accepted item: 1 = texture
+  reg  [FifoLog2:0] cwr_q, crd_q, twr_q, trd_q, owr_q, ord_q;
+  wire              head_tex   = ofifo_q[ord_q[FifoLog2-1:0]];
+  wire              order_nemp = owr_q != ord_q;
+  wire              head_valid = order_nemp && (head_tex ? twr_q != trd_q : cwr_q != crd_q);
+  wire              rs_ready;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      wr_q <= {(FifoLog2+1){1'b0}};
-      rd_q <= {(FifoLog2+1){1'b0}};
+      cwr_q <= {(FifoLog2+1){1'b0}};
+      crd_q <= {(FifoLog2+1){1'b0}};
+      twr_q <= {(FifoLog2+1){1'b0}};
+      trd_q <= {(FifoLog2+1){1'b0}};
+      owr_q <= {(FifoLog2+1){1'b0}};
+      ord_q <= {(FifoLog2+1){1'b0}};
     end else begin
-      if (cp_valid) wr_q <= wr_q + 1'b1;
-      if (pop)      rd_q <= rd_q + 1'b1;
+      if (cp_valid) cwr_q <= cwr_q + 1'b1;
+      if (tx_valid) twr_q <= twr_q + 1'b1;
+      if (v0_q)     owr_q <= owr_q + 1'b1;
+      if (pop) begin
+        ord_q <= ord_q + 1'b1;
+        if (head_tex) trd_q <= trd_q + 1'b1;
+        else          crd_q <= crd_q + 1'b1;
+      end
     end
   end
   always @(posedge clk_i) begin
-    if (cp_valid) fifo_q[wr_q[FifoLog2-1:0]] <= res_in;
+    if (cp_valid) cfifo_q[cwr_q[FifoLog2-1:0]] <= cres;
+    if (tx_valid) tfifo_q[twr_q[FifoLog2-1:0]] <= tres;
+    if (v0_q)     ofifo_q[owr_q[FifoLog2-1:0]] <= seg_q[SegW-1];
   end
-  wire [ResW-1:0] head = fifo_q[rd_q[FifoLog2-1:0]];
-  assign res_valid_o = wr_q != rd_q;
-  assign {res_id_o, res_i_o, res_j_o, res_seg_o, res_prim_o, res_pred1_o, res_ovf_o, res_tau_o,
-          res_t_o, res_x_o, res_hit_o, res_depth_o} = head;
+  wire [ResW-1:0] head = head_tex ? tfifo_q[trd_q[FifoLog2-1:0]] : cfifo_q[crd_q[FifoLog2-1:0]];
+  // A result leaves when the consumer and the pixel resolve both take it.
+  assign res_valid_o = head_valid && rs_ready;
+  assign {res_last_o, res_id_o, res_i_o, res_j_o, res_seg_o, res_tex_o, res_prim_o, res_pred1_o,
+          res_ovf_o, res_tau_o, res_t_o, res_x_o, res_hit_o, res_depth_o} = head;
+
+  // ---- pixel resolve ----
+  wire [2*IdxW-1:0] pix_ji;
+  rpu_resolve #(.PixW(2 * IdxW), .DepthW(DepthW), .PrimW(PrimW)) u_resolve (
+    .clk_i, .rst_ni, .valid_i(pop), .ready_o(rs_ready), .pixel_i({res_j_o, res_i_o}),
+    .last_i(res_last_o), .hit_i(res_hit_o), .depth_i(res_depth_o), .primitive_i(res_prim_o),
+    .valid_o(pix_valid_o), .ready_i(pix_ready_i), .pixel_o(pix_ji), .any_hit_o(pix_hit_o),
+    .depth_o(pix_depth_o), .primitive_o(pix_prim_o));
+  assign pix_j_o = pix_ji[2*IdxW-1 -: IdxW];
+  assign pix_i_o = pix_ji[IdxW-1:0];
 endmodule
 
 `default_nettype wire

@@ -1,0 +1,136 @@
+#include "rtl_backend.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+#include "stream_file.h"
+#include "top_ports.h"
+
+extern char** environ;
+
+namespace rpu::sim {
+
+namespace {
+
+std::string describe(const ref::HwParams& p) {
+  return fmt::format("n {} n1 {} coord_w {} dir_frac {} t_frac {} unit_frac {} edge_frac {} "
+                     "inv_w {} sqrt_w {} metric {} ip {}", p.n, p.n1, p.coord_w, p.dir_frac,
+                     p.t_frac, p.unit_frac, p.edge_frac, p.inv_w, p.sqrt_w,
+                     p.metric == ref::Metric::kAbs ? "abs" : "squared",
+                     p.unrolled ? "unrolled" : "iterative");
+}
+
+std::filesystem::path self_dir() {
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::current_path() : exe.parent_path();
+}
+
+// Runs rpu_sc on the schedule; returns its recorded streams.
+StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::string* config) {
+  if (!same_hardware(f.params, systemc_params()) || o.fault)
+    throw Error("--systemc", "the SystemC model is built for " + describe(systemc_params()) +
+                             " only (add --ip iterative at the default widths)");
+  const std::string exe = o.sc_exe.empty() ? (self_dir() / "rpu_sc").string() : o.sc_exe;
+  if (!std::filesystem::exists(exe))
+    throw Error("--systemc", "the SystemC harness " + exe + " is not built (configure with "
+                "RPU_SIM=ON and SystemC installed)");
+  std::error_code ec;
+  const auto dir = std::filesystem::temp_directory_path(ec) /
+                   fmt::format("rpu_sc_{}_{}", ::getpid(), reinterpret_cast<std::uintptr_t>(&f));
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw Error(dir.string(), "cannot create the co-simulation work directory");
+  const std::string job = (dir / "job.bin").string(), out = (dir / "streams.bin").string();
+  write_job(job, f);
+  std::vector<std::string> args = {exe, job, out};
+  if (o.fault) args.push_back("--fault");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+    throw Error(exe, "cannot start the SystemC harness");
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::filesystem::remove_all(dir, ec);
+    throw Error(exe, fmt::format("the SystemC harness failed (status {})",
+                                 WIFEXITED(status) ? WEXITSTATUS(status) : -1));
+  }
+  StreamRecord r = read_streams(out);
+  std::filesystem::remove_all(dir, ec);
+  *config = "systemc:" + describe(f.params);
+  return r;
+}
+
+}  // namespace
+
+std::string describe_rtl_configs() {
+  std::string s;
+  for (const RtlConfig& c : rtl_configs())
+    s += fmt::format("  {}{}: {}\n", c.name, c.fault ? " (fault-injected, tests only)" : "",
+                     describe(c.params));
+  return s.empty() ? "  (none: configure with RPU_SIM=ON)\n" : s;
+}
+
+RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
+                     const RtlOptions& o) {
+  const FrameSchedule f = schedule_frame(sc, m, o.ref);
+  Scoreboard sb(f, m, o.max_reports);
+  RtlRender out;
+  const RtlConfig* cfg = nullptr;
+  for (const RtlConfig& c : rtl_configs())
+    if (c.fault == o.fault && same_hardware(c.params, m.params)) cfg = &c;
+  if (o.systemc) {
+    out.harness = "systemc";
+    const StreamRecord r = run_systemc(f, o, &out.config);
+    for (const ItemResult& x : r.results) sb.on_result(x);
+    for (const PixelResult& x : r.pixels) sb.on_pixel(x);
+    out.stats = r.stats;
+    if (r.stats.timed_out) sb.note("TIMEOUT in the SystemC harness");
+  } else {
+    if (!cfg) {
+      std::string names;
+      for (const RtlConfig& c : rtl_configs())
+        if (c.fault == o.fault) names += (names.empty() ? "" : ", ") + c.name;
+      throw Error("--backend rtl", fmt::format("no Verilated rpu_top{} for {} (this build has: "
+                                               "{}; `rpu config` lists their parameters, "
+                                               "sim/harness/CMakeLists.txt adds others)",
+                                               o.fault ? " with an injected fault" : "",
+                                               describe(m.params), names.empty() ? "none" : names));
+    }
+    out.harness = "c++";
+    out.config = cfg->name;
+    auto top = cfg->make(o.x_seed);
+    out.stats = cosim_frame(*top, f, sb, o.cosim);
+  }
+  out.frame = sb.frame();
+  out.item_mismatches = sb.item_mismatches();
+  out.pixel_mismatches = sb.pixel_mismatches();
+  out.reports = sb.reports();
+  out.first_bad = sb.first_bad_pixel();
+  out.ok = sb.ok() && !out.stats.timed_out;
+  if (o.trace_pixel) {
+    if (!cfg || !cfg->traceable)
+      throw Error("--trace-pixel", fmt::format("the configuration {} is not built with FST "
+                                               "tracing (traceable ones: see `rpu config`)",
+                                               cfg ? cfg->name : describe(m.params)));
+    auto top = cfg->make(o.x_seed);
+    const auto [ti, tj] = *o.trace_pixel;
+    if (ti < 0 || tj < 0 || ti >= f.width || tj >= f.height)
+      throw Error("--trace-pixel", fmt::format("pixel ({},{}) is outside the {}x{} image", ti, tj,
+                                               f.width, f.height));
+    if (!trace_pixel(*top, f, m, ti, tj, o.trace_path, &out.trace_log))
+      out.trace_log = fmt::format("pixel ({},{}) has no work items (background by schedule); no "
+                                  "waveform written\n", ti, tj);
+  }
+  return out;
+}
+
+}  // namespace rpu::sim

@@ -1,0 +1,49 @@
+// `rpu render --backend rtl`: a frame through the Verilated rpu_top, every work item and every
+// pixel checked against the reference model. The C++ harness runs in this process; the
+// SystemC harness is the executable rpu_sc beside it (same schedule, same checker).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cosim.h"
+#include "image/frame.h"
+#include "model/descriptors.h"
+#include "model/ref_renderer.h"
+#include "scene/compiled_scene.h"
+
+namespace rpu::sim {
+
+struct RtlOptions {
+  ref::RefOptions ref;          // threads, binning, grid (the schedule is render_ref's)
+  bool systemc = false;         // run the SystemC harness (rpu_sc) instead of the C++ one
+  std::string sc_exe;           // rpu_sc; empty: beside the running executable
+  CosimOptions cosim;           // handshake patterns
+  bool fault = false;           // the fault-injected build (tests of the checker)
+  std::uint64_t x_seed = 0;     // random initial register values (0: Verilator's default)
+  int max_reports = 8;          // mismatches reported in full
+  std::optional<std::pair<int, int>> trace_pixel;  // re-run this pixel with an FST waveform
+  std::string trace_path = "trace.fst";
+};
+
+struct RtlRender {
+  image::Frame frame;           // from rpu_top's pixel stream
+  CosimStats stats;
+  std::string config;           // the Verilated configuration's name
+  std::string harness;          // "c++" or "systemc"
+  std::size_t item_mismatches = 0, pixel_mismatches = 0;
+  std::vector<std::string> reports;     // mismatch records, the model's stages included
+  std::pair<int, int> first_bad{-1, -1};
+  std::string trace_log;        // what --trace-pixel did
+  bool ok = false;              // every item and every pixel equal to the model
+};
+
+RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
+                     const RtlOptions& o);
+
+// The Verilated configurations of this build, one line each (for errors and `rpu config`).
+std::string describe_rtl_configs();
+
+}  // namespace rpu::sim

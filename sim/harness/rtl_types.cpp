@@ -1,0 +1,94 @@
+#include "rtl_types.h"
+
+#include <fmt/format.h>
+
+namespace rpu::sim {
+
+std::string to_decimal(i128 v) {
+  if (v == 0) return "0";
+  const bool neg = v < 0;
+  u128 u = neg ? static_cast<u128>(-(v + 1)) + 1 : static_cast<u128>(v);
+  std::string s;
+  while (u) {
+    s.insert(s.begin(), static_cast<char>('0' + static_cast<int>(u % 10)));
+    u /= 10;
+  }
+  return neg ? "-" + s : s;
+}
+
+ref::HwParams systemc_params() {
+  ref::HwParams p;
+  p.unrolled = false;
+  return p;
+}
+
+bool same_hardware(const ref::HwParams& a, const ref::HwParams& b) {
+  return a.n == b.n && a.n1 == b.n1 && a.coord_w == b.coord_w && a.dir_frac == b.dir_frac &&
+         a.t_frac == b.t_frac && a.unit_frac == b.unit_frac && a.edge_frac == b.edge_frac &&
+         a.inv_w == b.inv_w && a.sqrt_w == b.sqrt_w && a.metric == b.metric &&
+         a.unrolled == b.unrolled;
+}
+
+TopWidths::TopWidths(const ref::HwParams& p)
+    : CW(p.coord_w), DW(p.coord_w + 1), TW(p.t_w()), UW(p.unit_w()), XW(p.coord_w + 3),
+      HW(p.coord_w + 5), VgW(4 + p.dir_frac + ref::HwParams::kRayGuard), EgW(p.edge_w()),
+      R2W(2 * p.coord_w + 1), L2W(2 * p.coord_w + 3), N(p.n) {
+  GdW = 2 + HW + CW + p.t_frac + 3 * UW;
+  CamW = 9 * VgW + 12 * EgW + 3 * CW;
+  SegW = 1 + kPrimW + 3 * CW + 3 * DW + 3 * CW + R2W + L2W + p.inv_w + 7 + 2 * GdW;
+  DepthW = CW + 4 + EgW + 2;
+}
+
+void Bits::set_bit(int k, bool v) {
+  std::uint32_t& w = words_[static_cast<size_t>(k / 32)];
+  const std::uint32_t m = 1u << (k % 32);
+  w = v ? (w | m) : (w & ~m);
+}
+
+u128 Bits::field(int lo, int w) const {
+  u128 u = 0;
+  for (int b = 0; b < w; ++b)
+    if (lo + b < width_ && bit(lo + b)) u |= u128{1} << b;
+  return u;
+}
+
+i128 Bits::field_signed(int lo, int w) const {
+  const u128 u = field(lo, w);
+  if (w >= 128) return static_cast<i128>(u);
+  const u128 sign = u128{1} << (w - 1);
+  return static_cast<i128>((u ^ sign) - sign);
+}
+
+int Concat::width() const {
+  int w = 0;
+  for (const auto& f : fields_) w += f.width;
+  return w;
+}
+
+Bits Concat::bits() const {
+  Bits b(width());
+  int at = 0;
+  for (auto it = fields_.rbegin(); it != fields_.rend(); ++it) {
+    const u128 u = static_cast<u128>(it->value);
+    for (int k = 0; k < it->width; ++k, ++at)
+      b.set_bit(at, k < 128 ? ((u >> k) & 1) != 0 : it->value < 0);
+  }
+  return b;
+}
+
+bool ItemResult::operator==(const ItemResult& o) const {
+  return id == o.id && i == o.i && j == o.j && seg == o.seg && last == o.last &&
+         texture == o.texture && primitive == o.primitive && pred1 == o.pred1 && hit == o.hit &&
+         overflow == o.overflow && depth == o.depth && tau == o.tau && t == o.t &&
+         X[0] == o.X[0] && X[1] == o.X[1] && X[2] == o.X[2];
+}
+
+std::string ItemResult::describe() const {
+  return fmt::format("id {} pixel ({},{}) seg {} last {} {} prim {} pred1 {} hit {} depth {} "
+                     "tau {} t {} X ({}, {}, {}) ovf {}",
+                     id, i, j, seg, last ? 1 : 0, texture ? "texture" : "curve", primitive,
+                     pred1 ? 1 : 0, hit ? 1 : 0, to_decimal(depth), tau, to_decimal(t), to_decimal(X[0]), to_decimal(X[1]),
+                     to_decimal(X[2]), overflow ? 1 : 0);
+}
+
+}  // namespace rpu::sim

@@ -1,0 +1,112 @@
+// The co-simulation's view of rpu_top: its ports as plain records (work items in, per-item
+// results and per-pixel results out), the port widths that follow from the hardware
+// parameters, and the bit vectors that carry wide fields between the harnesses and the
+// Verilated models (C++ or SystemC).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fixed/fixed.h"
+#include "model/hw_params.h"
+
+namespace rpu::sim {
+
+using fixed::i128;
+using fixed::u128;
+
+// rpu_top's widths at the given hardware parameters (rtl/rpu_top.v, docs/rtl.md). The
+// top-level parameters that are not hardware parameters are fixed here and in every build.
+struct TopWidths {
+  static constexpr int kSegAddrW = 12;  // segment RAM: 4096 descriptors
+  static constexpr int kIdxW = 14;      // pixel index
+  static constexpr int kIdW = 32;       // work-item id
+  static constexpr int kPrimW = 16;     // primitive id
+  int CW, DW, TW, UW, XW, HW, VgW, EgW, R2W, L2W, GdW, CamW, SegW, DepthW, N;
+  explicit TopWidths(const ref::HwParams& p);
+};
+
+// The Verilog parameters of two configurations are equal (every field of HwParams).
+bool same_hardware(const ref::HwParams& a, const ref::HwParams& b);
+
+// The parameters of the SystemC build (sim/systemc/CMakeLists.txt passes -GUnrolled=0): the
+// default widths and n, n1 in the iterative form.
+ref::HwParams systemc_params();
+
+// Decimal text of a 128-bit integer (for reports).
+std::string to_decimal(i128 v);
+
+// A little-endian bit vector: bit k is bit k%32 of word k/32.
+class Bits {
+ public:
+  Bits() = default;
+  explicit Bits(int width) : width_(width), words_(static_cast<size_t>((width + 31) / 32), 0u) {}
+  int width() const { return width_; }
+  const std::vector<std::uint32_t>& words() const { return words_; }
+  std::vector<std::uint32_t>& words() { return words_; }
+  bool bit(int k) const { return (words_[static_cast<size_t>(k / 32)] >> (k % 32)) & 1u; }
+  void set_bit(int k, bool v);
+  // Field [lo, lo + w) as unsigned or sign-extended (w ≤ 128).
+  u128 field(int lo, int w) const;
+  i128 field_signed(int lo, int w) const;
+
+ private:
+  int width_ = 0;
+  std::vector<std::uint32_t> words_;
+};
+
+// Packs fields MSB first, like a Verilog concatenation {a, b, c}; values are two's complement.
+class Concat {
+ public:
+  void add(i128 value, int width) { fields_.push_back({value, width}); }
+  void add3(i128 x, i128 y, i128 z, int width) {  // {z, y, x}
+    add(z, width);
+    add(y, width);
+    add(x, width);
+  }
+  int width() const;
+  Bits bits() const;
+
+ private:
+  struct Field {
+    i128 value;
+    int width;
+  };
+  std::vector<Field> fields_;
+};
+
+// One (pixel, segment) work item as rpu_top takes it.
+struct WorkItem {
+  std::uint32_t id = 0;
+  int i = 0, j = 0;
+  std::uint32_t seg = 0;  // segment RAM address
+  bool last = false;      // the pixel's last item
+  bool texture = false;   // (not a port: the descriptor's bit; kept for reports)
+};
+
+// One result record of rpu_top's result stream.
+struct ItemResult {
+  std::uint32_t id = 0;
+  int i = 0, j = 0;
+  std::uint32_t seg = 0;
+  bool last = false, texture = false;
+  std::uint32_t primitive = 0;
+  bool pred1 = false, hit = false, overflow = false;
+  i128 depth = 0;
+  std::uint64_t tau = 0;
+  i128 t = 0;
+  i128 X[3] = {0, 0, 0};
+  bool operator==(const ItemResult& o) const;
+  std::string describe() const;  // every field, one line
+};
+
+// One result of rpu_top's pixel stream.
+struct PixelResult {
+  int i = 0, j = 0;
+  bool hit = false;
+  i128 depth = 0;
+  std::uint32_t primitive = 0;
+};
+
+}  // namespace rpu::sim

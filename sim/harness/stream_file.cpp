@@ -1,0 +1,232 @@
+#include "stream_file.h"
+
+#include <cstring>
+#include <fstream>
+
+#include "common/error.h"
+
+namespace rpu::sim {
+
+namespace {
+
+constexpr std::uint32_t kJobMagic = 0x52505531;     // "RPU1"
+constexpr std::uint32_t kStreamMagic = 0x52505532;  // "RPU2"
+
+class Writer {
+ public:
+  explicit Writer(const std::string& path) : path_(path), out_(path, std::ios::binary) {
+    if (!out_) throw Error(path, "cannot open for writing");
+  }
+  void u32(std::uint32_t v) { out_.write(reinterpret_cast<const char*>(&v), 4); }
+  void u64(std::uint64_t v) { out_.write(reinterpret_cast<const char*>(&v), 8); }
+  void i128v(i128 v) {
+    u64(static_cast<std::uint64_t>(static_cast<u128>(v)));
+    u64(static_cast<std::uint64_t>(static_cast<u128>(v) >> 64));
+  }
+  void f64(double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, 8);
+    u64(b);
+  }
+  void bits(const Bits& b) {
+    u32(static_cast<std::uint32_t>(b.width()));
+    for (auto w : b.words()) u32(w);
+  }
+  void close() {
+    out_.close();
+    if (!out_) throw Error(path_, "write failed");
+  }
+
+ private:
+  std::string path_;
+  std::ofstream out_;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+    if (!in_) throw Error(path, "cannot open for reading");
+  }
+  std::uint32_t u32() {
+    std::uint32_t v = 0;
+    get(&v, 4);
+    return v;
+  }
+  std::uint64_t u64() {
+    std::uint64_t v = 0;
+    get(&v, 8);
+    return v;
+  }
+  i128 i128v() {
+    const u128 lo = u64();
+    const u128 hi = u64();
+    return static_cast<i128>(lo | (hi << 64));
+  }
+  double f64() {
+    const std::uint64_t b = u64();
+    double v;
+    std::memcpy(&v, &b, 8);
+    return v;
+  }
+  Bits bits() {
+    const std::uint32_t w = u32();
+    if (w > 65536) throw Error(path_, "corrupt bit vector width");
+    Bits b(static_cast<int>(w));
+    for (auto& x : b.words()) x = u32();
+    return b;
+  }
+  std::uint32_t count(std::uint32_t max) {
+    const std::uint32_t n = u32();
+    if (n > max) throw Error(path_, "corrupt record count");
+    return n;
+  }
+
+ private:
+  void get(void* p, std::size_t n) {
+    in_.read(static_cast<char*>(p), static_cast<std::streamsize>(n));
+    if (!in_) throw Error(path_, "truncated file");
+  }
+  std::string path_;
+  std::ifstream in_;
+};
+
+void put_params(Writer& w, const ref::HwParams& p) {
+  for (int v : {p.n, p.n1, p.coord_w, p.dir_frac, p.t_frac, p.unit_frac, p.edge_frac, p.inv_w,
+                p.sqrt_w, p.metric == ref::Metric::kSquared ? 1 : 0, p.unrolled ? 1 : 0})
+    w.u32(static_cast<std::uint32_t>(v));
+}
+ref::HwParams get_params(Reader& r) {
+  ref::HwParams p;
+  for (int* v : {&p.n, &p.n1, &p.coord_w, &p.dir_frac, &p.t_frac, &p.unit_frac, &p.edge_frac,
+                 &p.inv_w, &p.sqrt_w})
+    *v = static_cast<int>(r.u32());
+  p.metric = r.u32() ? ref::Metric::kSquared : ref::Metric::kAbs;
+  p.unrolled = r.u32() != 0;
+  return p;
+}
+
+}  // namespace
+
+void write_job(const std::string& path, const FrameSchedule& f) {
+  Writer w(path);
+  w.u32(kJobMagic);
+  put_params(w, f.params);
+  w.u32(static_cast<std::uint32_t>(f.width));
+  w.u32(static_cast<std::uint32_t>(f.height));
+  w.bits(f.camera);
+  w.u32(static_cast<std::uint32_t>(f.segments.size()));
+  for (const Bits& b : f.segments) w.bits(b);
+  w.u32(static_cast<std::uint32_t>(f.items.size()));
+  for (const WorkItem& it : f.items) {
+    w.u32(it.id);
+    w.u32(static_cast<std::uint32_t>(it.i));
+    w.u32(static_cast<std::uint32_t>(it.j));
+    w.u32(it.seg);
+    w.u32((it.last ? 1u : 0u) | (it.texture ? 2u : 0u));
+  }
+  w.u32(static_cast<std::uint32_t>(f.expected_pixels.size()));
+  w.close();
+}
+
+FrameSchedule read_job(const std::string& path) {
+  Reader r(path);
+  if (r.u32() != kJobMagic) throw Error(path, "not an rpu co-simulation job file");
+  FrameSchedule f;
+  f.params = get_params(r);
+  f.width = static_cast<int>(r.u32());
+  f.height = static_cast<int>(r.u32());
+  f.camera = r.bits();
+  const std::uint32_t nseg = r.count(1u << 16);
+  for (std::uint32_t k = 0; k < nseg; ++k) f.segments.push_back(r.bits());
+  const std::uint32_t n = r.count(1u << 30);
+  f.items.resize(n);
+  for (WorkItem& it : f.items) {
+    it.id = r.u32();
+    it.i = static_cast<int>(r.u32());
+    it.j = static_cast<int>(r.u32());
+    it.seg = r.u32();
+    const std::uint32_t flags = r.u32();
+    it.last = flags & 1u;
+    it.texture = flags & 2u;
+    (it.texture ? f.texture_items : f.curve_items)++;
+  }
+  // The pixel count sizes the pixel stream (its values are not needed by the harness).
+  f.expected_pixels.resize(r.count(1u << 30));
+  return f;
+}
+
+void write_streams(const std::string& path, const StreamRecord& s) {
+  Writer w(path);
+  w.u32(kStreamMagic);
+  const CosimStats& st = s.stats;
+  for (std::uint64_t v : {st.cycles, st.load_cycles, st.items, st.curve_items, st.texture_items,
+                          st.pixels, st.hits, st.latency_cycles, st.stall_cycles})
+    w.u64(v);
+  w.f64(st.sim_seconds);
+  w.u32(st.timed_out ? 1 : 0);
+  w.u32(static_cast<std::uint32_t>(s.results.size()));
+  for (const ItemResult& r : s.results) {
+    w.u32(r.id);
+    w.u32(static_cast<std::uint32_t>(r.i));
+    w.u32(static_cast<std::uint32_t>(r.j));
+    w.u32(r.seg);
+    w.u32((r.last ? 1u : 0u) | (r.texture ? 2u : 0u) | (r.pred1 ? 4u : 0u) | (r.hit ? 8u : 0u) |
+          (r.overflow ? 16u : 0u));
+    w.u32(r.primitive);
+    w.i128v(r.depth);
+    w.u64(r.tau);
+    w.i128v(r.t);
+    for (int c = 0; c < 3; ++c) w.i128v(r.X[c]);
+  }
+  w.u32(static_cast<std::uint32_t>(s.pixels.size()));
+  for (const PixelResult& p : s.pixels) {
+    w.u32(static_cast<std::uint32_t>(p.i));
+    w.u32(static_cast<std::uint32_t>(p.j));
+    w.u32(p.hit ? 1 : 0);
+    w.i128v(p.depth);
+    w.u32(p.primitive);
+  }
+  w.close();
+}
+
+StreamRecord read_streams(const std::string& path) {
+  Reader r(path);
+  if (r.u32() != kStreamMagic) throw Error(path, "not an rpu co-simulation stream file");
+  StreamRecord s;
+  CosimStats& st = s.stats;
+  for (std::uint64_t* v : {&st.cycles, &st.load_cycles, &st.items, &st.curve_items,
+                           &st.texture_items, &st.pixels, &st.hits, &st.latency_cycles,
+                           &st.stall_cycles})
+    *v = r.u64();
+  st.sim_seconds = r.f64();
+  st.timed_out = r.u32() != 0;
+  s.results.resize(r.count(1u << 30));
+  for (ItemResult& x : s.results) {
+    x.id = r.u32();
+    x.i = static_cast<int>(r.u32());
+    x.j = static_cast<int>(r.u32());
+    x.seg = r.u32();
+    const std::uint32_t fl = r.u32();
+    x.last = fl & 1u;
+    x.texture = fl & 2u;
+    x.pred1 = fl & 4u;
+    x.hit = fl & 8u;
+    x.overflow = fl & 16u;
+    x.primitive = r.u32();
+    x.depth = r.i128v();
+    x.tau = r.u64();
+    x.t = r.i128v();
+    for (auto& c : x.X) c = r.i128v();
+  }
+  s.pixels.resize(r.count(1u << 30));
+  for (PixelResult& p : s.pixels) {
+    p.i = static_cast<int>(r.u32());
+    p.j = static_cast<int>(r.u32());
+    p.hit = r.u32() != 0;
+    p.depth = r.i128v();
+    p.primitive = r.u32();
+  }
+  return s;
+}
+
+}  // namespace rpu::sim

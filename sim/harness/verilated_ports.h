@@ -1,0 +1,141 @@
+// TopPorts over a Verilated C++ model of rpu_top (any parameters: widths come from TopWidths).
+#pragma once
+
+#include <verilated.h>
+#if VM_TRACE_FST
+#include <verilated_fst_c.h>
+#endif
+
+#include "port_bits.h"
+#include "top_ports.h"
+
+namespace rpu::sim {
+
+// Traced: the model was Verilated with --trace-fst (only those have V::trace).
+template <class V, bool Traced>
+class VerilatedPorts final : public TopPorts {
+ public:
+  VerilatedPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p) {
+    ctx_ = std::make_unique<VerilatedContext>();
+    if (x_seed != 0) {
+      ctx_->randReset(2);  // every initial value random (the model is built --x-initial unique)
+      ctx_->randSeed(static_cast<int>(x_seed));
+    }
+    top_ = std::make_unique<V>(ctx_.get());
+    top_->rst_ni = 0;
+    top_->cam_we_i = 0;
+    top_->seg_we_i = 0;
+    top_->item_valid_i = 0;
+    top_->res_ready_i = 0;
+    top_->pix_ready_i = 0;
+  }
+  ~VerilatedPorts() override { finish(); }
+
+  void reset(int cycles) override {
+    top_->rst_ni = 0;
+    for (int k = 0; k < cycles; ++k) tick();
+    top_->rst_ni = 1;
+  }
+  void write_camera(const Bits& data) override {
+    to_port(top_->cam_data_i, data);
+    top_->cam_we_i = 1;
+    tick();
+    top_->cam_we_i = 0;
+  }
+  void write_segment(std::uint32_t addr, const Bits& data) override {
+    to_port(top_->seg_data_i, data);
+    top_->seg_addr_i = addr;
+    top_->seg_we_i = 1;
+    tick();
+    top_->seg_we_i = 0;
+  }
+  void drive(const WorkItem* item, bool res_ready, bool pix_ready) override {
+    top_->item_valid_i = item != nullptr;
+    if (item) {
+      top_->item_id_i = item->id;
+      top_->item_i_i = static_cast<unsigned>(item->i);
+      top_->item_j_i = static_cast<unsigned>(item->j);
+      top_->item_seg_i = item->seg;
+      top_->item_last_i = item->last;
+    }
+    top_->res_ready_i = res_ready;
+    top_->pix_ready_i = pix_ready;
+    top_->eval();
+  }
+  bool item_ready() const override { return top_->item_ready_o; }
+  bool res_valid() const override { return top_->res_valid_o; }
+  bool pix_valid() const override { return top_->pix_valid_o; }
+  ItemResult result() const override {
+    ItemResult r;
+    r.id = top_->res_id_o;
+    r.i = static_cast<int>(top_->res_i_o);
+    r.j = static_cast<int>(top_->res_j_o);
+    r.seg = top_->res_seg_o;
+    r.last = top_->res_last_o;
+    r.texture = top_->res_tex_o;
+    r.primitive = top_->res_prim_o;
+    r.pred1 = top_->res_pred1_o;
+    r.hit = top_->res_hit_o;
+    r.overflow = top_->res_ovf_o;
+    r.depth = port_s(top_->res_depth_o, w_.DepthW);
+    r.tau = static_cast<std::uint64_t>(port_u(top_->res_tau_o, w_.N));
+    r.t = port_s(top_->res_t_o, w_.TW);
+    for (int c = 0; c < 3; ++c) r.X[c] = port_comp(top_->res_x_o, c, w_.XW);
+    return r;
+  }
+  PixelResult pixel() const override {
+    PixelResult p;
+    p.i = static_cast<int>(top_->pix_i_o);
+    p.j = static_cast<int>(top_->pix_j_o);
+    p.hit = top_->pix_hit_o;
+    p.depth = port_s(top_->pix_depth_o, w_.DepthW);
+    p.primitive = top_->pix_prim_o;
+    return p;
+  }
+  void tick() override {
+    top_->clk_i = 0;
+    top_->eval();
+    dump();
+    ctx_->timeInc(1);
+    top_->clk_i = 1;
+    top_->eval();
+    dump();
+    ctx_->timeInc(1);
+  }
+  void trace(const std::string& fst_path) override {
+#if VM_TRACE_FST
+    if constexpr (Traced) {
+      ctx_->traceEverOn(true);
+      fst_ = std::make_unique<VerilatedFstC>();
+      top_->trace(fst_.get(), 99);
+      fst_->open(fst_path.c_str());
+      return;
+    }
+#endif
+    (void)fst_path;
+  }
+  void finish() override {
+    if (finished_) return;
+    finished_ = true;
+    top_->final();
+#if VM_TRACE_FST
+    if (fst_) fst_->close();
+#endif
+  }
+
+ private:
+  void dump() {
+#if VM_TRACE_FST
+    if (fst_) fst_->dump(ctx_->time());
+#endif
+  }
+  TopWidths w_;
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<V> top_;
+#if VM_TRACE_FST
+  std::unique_ptr<VerilatedFstC> fst_;
+#endif
+  bool finished_ = false;
+};
+
+}  // namespace rpu::sim

@@ -1,0 +1,76 @@
+# Whole frames through the Verilated rpu_top, every work item and pixel checked against the
+# model (`rpu compare` / `rpu render --backend rtl`): every demo scene at 64×64 and at a
+# non-square size for the defaults, and at 64×64 for the iterative form and two other (n, n1)
+# pairs; the SystemC harness against the C++ one; the checker's own test (a fault-injected build
+# must be caught and reported with the pixel); --trace-pixel; and the co-simulation's bad input.
+set(RPU_RUN ${PROJECT_SOURCE_DIR}/tests/rpu_run.cmake)
+set(RPU_CMP_OUT ${CMAKE_CURRENT_BINARY_DIR}/compare)
+set(rtl_tests "")
+foreach(scene curve12 ellipse6 polyline9 airfield)
+  add_test(NAME rtl_compare_${scene}_64 COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+           "-DARGS=compare;builtin:${scene};--size;64x64;--out;${RPU_CMP_OUT}/${scene}_64"
+           -DEXPECT_RC=0 "-DEXPECT_ERR=PASS: report"
+           "-DFILES=${RPU_CMP_OUT}/${scene}_64/metrics.json;${RPU_CMP_OUT}/${scene}_64/report.html"
+           -P ${RPU_RUN})
+  add_test(NAME rtl_compare_${scene}_72x40 COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+           "-DARGS=compare;builtin:${scene};--size;72x40;--out;${RPU_CMP_OUT}/${scene}_72x40"
+           -DEXPECT_RC=0 "-DEXPECT_ERR=PASS: report" -P ${RPU_RUN})
+  list(APPEND rtl_tests rtl_compare_${scene}_64 rtl_compare_${scene}_72x40)
+  foreach(cfg "iterative;--ip;iterative" "n8_n1_1;--n;8;--n1;1"
+              "n12_n1_3_iterative;--n;12;--n1;3;--ip;iterative")
+    list(POP_FRONT cfg name)
+    add_test(NAME rtl_render_${scene}_64_${name} COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+             "-DARGS=render;builtin:${scene};--size;64x64;--backend;rtl;${cfg};-o;${RPU_CMP_OUT}/${scene}_${name}.png"
+             -DEXPECT_RC=0 "-DEXPECT_ERR=rtl \\(c\\+\\+ harness" -DNOT_ERR=MISMATCH -P ${RPU_RUN})
+    list(APPEND rtl_tests rtl_render_${scene}_64_${name})
+  endforeach()
+endforeach()
+
+# The texture path at full resolution (64,489 texture work items of the airfield).
+add_test(NAME rtl_compare_airfield_full COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;builtin:airfield;--out;${RPU_CMP_OUT}/airfield_full"
+         -DEXPECT_RC=0 "-DEXPECT_ERR=PASS: report" -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_compare_airfield_full)
+
+# The SystemC harness: same image and cycle count as the C++ harness (iterative defaults).
+if(TARGET rpu_sc)
+  foreach(scene curve12 airfield)
+    add_test(NAME rtl_systemc_${scene} COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+             -DOUT=${RPU_CMP_OUT}/systemc_${scene}
+             "-DARGS=builtin:${scene};--size;40x32;--ip;iterative"
+             -P ${PROJECT_SOURCE_DIR}/tests/rtl_systemc.cmake)
+    list(APPEND rtl_tests rtl_systemc_${scene})
+  endforeach()
+endif()
+
+# The comparison can fail: the argmin tie rule flipped in the RTL (RPU_FAULT_ARGMIN_TIE) must
+# give exit status 2 and a mismatch report naming the pixel, the item and the model's stages.
+add_test(NAME rtl_fault_is_caught COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;builtin:curve12;--size;48x48;--n;8;--n1;1;--ip;iterative;--rtl-fault;--out;${RPU_CMP_OUT}/fault"
+         -DEXPECT_RC=2
+         "-DEXPECT_ERR=MISMATCH: pixel \\([0-9]+,[0-9]+\\) work item [0-9]+;model stages:;IP step 1: sums;FAIL: report"
+         "-DFILES=${RPU_CMP_OUT}/fault/report.html" -P ${RPU_RUN})
+# --trace-pixel writes a waveform of that pixel's work items.
+add_test(NAME rtl_trace_pixel COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=render;builtin:curve12;--size;32x32;--backend;rtl;--trace-pixel;16,9;--trace-out;${RPU_CMP_OUT}/p16_9.fst;-o;${RPU_CMP_OUT}/trace.png"
+         -DEXPECT_RC=0 "-DEXPECT_ERR=pixel \\(16,9\\): [0-9]+ work items"
+         "-DFILES=${RPU_CMP_OUT}/p16_9.fst" -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_fault_is_caught rtl_trace_pixel)
+
+# Bad input to the co-simulation: one line, exit 1 ('~' separates arguments here).
+foreach(bad "no_config|--size~16x16~--n~10~--n1~2|no Verilated rpu_top for n 10"
+            "trace_syntax|--size~16x16~--trace-pixel~3-4|--trace-pixel: must be X,Y"
+            "trace_range|--size~16x16~--trace-pixel~500,2|outside the 16x16 image"
+            "systemc_unrolled|--size~16x16~--systemc|--systemc: the SystemC model is built"
+            "size_syntax|--size~16by16|--size: must be WxH")
+  string(REPLACE "|" ";" parts "${bad}")
+  list(GET parts 0 name)
+  list(GET parts 1 flags)
+  list(GET parts 2 msg)
+  string(REPLACE "~" ";" flags "${flags}")
+  add_test(NAME rtl_bad_${name} COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+           "-DARGS=render;builtin:curve12;--backend;rtl;${flags};-o;${RPU_CMP_OUT}/bad.png"
+           -DEXPECT_RC=1 "-DEXPECT_ERR=${msg}" -P ${RPU_RUN})
+  list(APPEND rtl_tests rtl_bad_${name})
+endforeach()
+set_tests_properties(${rtl_tests} PROPERTIES LABELS "rtl;cosim")
