@@ -355,6 +355,11 @@ std::string banner(const CompareInput& in, const nlohmann::json& metrics) {
   if (!has("ref")) return "<div class=\"banner skip\">rtl not checked: ref not run</div>\n";
   const auto differ = metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>();
   const auto pixels = metrics["pixels"].get<size_t>();
+  const nlohmann::json& items = metrics["rtl_work_item_mismatches"];
+  if (differ == 0 && items.is_number() && items.get<size_t>() > 0)
+    return fmt::format("<div class=\"banner fail\">FAIL: rtl == ref on all {} pixels, but {} work "
+                       "items differ from the model in some field (see the mismatch records)</div>\n",
+                       pixels, items.get<size_t>());
   if (differ == 0)
     return fmt::format("<div class=\"banner pass\">PASS: rtl == ref on all {} pixels</div>\n", pixels);
   return fmt::format("<div class=\"banner fail\">FAIL: rtl differs from ref on {} of {} pixels</div>\n",
@@ -506,6 +511,10 @@ CompareSummary write_compare_report(const CompareInput& in, const std::string& o
 
   for (const char* stat : {"cycles", "pairs", "latency_cycles"})
     metrics[stat] = in.rtl.is_object() && in.rtl.contains(stat) ? in.rtl[stat] : nlohmann::json();
+  // The co-simulation's own checker: work items (every result field) and the pixel stream.
+  metrics["rtl_work_item_mismatches"] =
+      in.rtl.is_object() && in.rtl.contains("item_mismatches") ? in.rtl["item_mismatches"]
+                                                               : nlohmann::json();
 
   const bool checked_rtl = find("rtl") && find("ref");
   const bool rtl_equals_ref = checked_rtl && metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>() == 0;

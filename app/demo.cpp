@@ -14,7 +14,6 @@
 #include "image/image_io.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"
-#include "model/ref_renderer.h"
 
 namespace rpu::app {
 
@@ -32,118 +31,72 @@ scene::Scene load_scene_argument(const std::string& argument) {
   return scene::load_scene(argument);
 }
 
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
-
-namespace {
-
-// Pixels that differ between two frames, and in which direction a hit was lost or gained.
-struct Agreement {
-  size_t differ = 0, only_a = 0, only_b = 0;
-};
-Agreement compare(const image::Frame& a, const image::Frame& b) {
-  Agreement g;
-  g.differ = image::count_differing_pixels(a, b);
-  for (size_t k = 0; k < a.primitive.size(); ++k) {
-    const bool ha = a.primitive[k] != image::kBackground;
-    const bool hb = b.primitive[k] != image::kBackground;
-    g.only_a += ha && !hb;
-    g.only_b += hb && !ha;
-  }
-  return g;
-}
-
-}  // namespace
-
 int run_demo(const DemoOptions& options) {
   namespace fs = std::filesystem;
   fs::create_directories(options.out_dir);
   nlohmann::json summary = nlohmann::json::array();
+  const ref::HwParams& hw = options.compare.backends.hw;
   std::string md = fmt::format(
-      "# Demo renders\n\nn = {}, n1 = {} (K = {}), coord_w = {}, metric = {}.\n\n"
-      "Differing pixels (hit only in the first / only in the second).\n\n"
-      "| scene | size | segments | hit px float / float-ip / ref | float-ip vs float "
-      "| ref vs float-ip | ref vs float | seconds float / float-ip / ref |\n"
-      "|---|---|---|---|---|---|---|---|\n",
-      options.hw.n, options.hw.n1, options.hw.K(), options.hw.coord_w,
-      options.hw.metric == ref::Metric::kAbs ? "abs" : "squared");
+      "# Demo: every built-in scene through every backend\n\n"
+      "n = {}, n1 = {} (K = {}), coord_w = {}, metric = {}, IP {}. Mismatched pixels per pair; "
+      "RTL cycles from the co-simulation.\n\n"
+      "| scene | size | rtl vs ref | ref vs float-ip | ref vs float | float-ip vs float | pairs "
+      "| cycles | latency | co-sim s | items/s | cycles/s | report |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      hw.n, hw.n1, hw.K(), hw.coord_w, hw.metric == ref::Metric::kAbs ? "abs" : "squared",
+      hw.unrolled ? "unrolled" : "iterative");
+  std::string rows_html;
+  int status = 0;
   for (const auto& b : builtin_scenes()) {
-    scene::Scene sc = scene::parse_scene(b.json, std::string("builtin:") + b.name);
-    if (options.max_side > 0) {
-      const int side = std::max(sc.camera.width, sc.camera.height);
-      if (side > options.max_side) {
-        sc.camera.width = std::max(1, sc.camera.width * options.max_side / side);
-        sc.camera.height = std::max(1, sc.camera.height * options.max_side / side);
-      }
-    }
-    const scene::CompiledScene compiled = scene::compile_scene(sc);
-    std::vector<scene::Color> colors;
-    for (const auto& p : compiled.primitives) colors.push_back(p.color);
-    nlohmann::json entry = {{"scene", b.name},
-                            {"width", sc.camera.width},
-                            {"height", sc.camera.height},
-                            {"pixels", sc.camera.width * sc.camera.height},
-                            {"curve_segments", compiled.curve_segments.size()},
-                            {"texture_segments", compiled.texture_segments.size()}};
-    constexpr int kBackends = 3;
-    const char* names[kBackends] = {"float", "float-ip", "ref"};
-    image::Frame frames[kBackends];
-    double times[kBackends];
-    for (int m = 0; m < kBackends; ++m) {
-      const auto t0 = std::chrono::steady_clock::now();
-      std::uint64_t pairs = 0, overflows = 0;
-      if (m < 2) {
-        tracer::FloatOptions fo = options.float_options;
-        fo.method = m == 0 ? tracer::Method::kIdeal : tracer::Method::kIterative;
-        tracer::RenderStats stats;
-        frames[m] = tracer::render_float(compiled, fo, &stats);
-        pairs = stats.pairs_tested + stats.texture_pairs_tested;
-      } else {
-        const ref::ModelScene model = ref::quantize_scene(compiled, options.hw);
-        ref::RefStats stats;
-        frames[m] = ref::render_ref(compiled, model,
-                                    {options.float_options.threads, options.float_options.binning,
-                                     options.float_options.grid},
-                                    &stats);
-        pairs = stats.curve_pairs + stats.texture_pairs;
-        overflows = stats.overflow_pairs;
-      }
-      times[m] = seconds_since(t0);
-      const std::string file = fmt::format("{}_{}.png", b.name, names[m]);
-      image::write_rgb((fs::path(options.out_dir) / file).string(), sc.camera.width,
-                       sc.camera.height, image::to_rgb(frames[m], colors, compiled.background));
-      entry[names[m]] = {{"image", file},     {"hit_pixels", frames[m].hit_pixels()},
-                         {"pairs", pairs},    {"overflow_pairs", overflows},
-                         {"seconds", times[m]}};
-    }
-    const Agreement ip_f = compare(frames[1], frames[0]);
-    const Agreement ref_ip = compare(frames[2], frames[1]);
-    const Agreement ref_f = compare(frames[2], frames[0]);
-    entry["float_ip_vs_float_mismatched_pixels"] = ip_f.differ;
-    entry["ref_vs_float_ip_mismatched_pixels"] = ref_ip.differ;
-    entry["ref_vs_float_mismatched_pixels"] = ref_f.differ;
-    entry["ref_vs_float_ip"] = {{"hit_only_in_ref", ref_ip.only_a}, {"hit_only_in_float_ip", ref_ip.only_b}};
-    entry["float_ip_vs_float"] = {{"hit_only_in_float_ip", ip_f.only_a}, {"hit_only_in_float", ip_f.only_b}};
-    summary.push_back(entry);
-    const auto cell = [](const Agreement& g) { return fmt::format("{} ({} / {})", g.differ, g.only_a, g.only_b); };
-    md += fmt::format("| {} | {}×{} | {} | {} / {} / {} | {} | {} | {} | {:.3f} / {:.3f} / {:.3f} |\n",
+    const std::string arg = std::string("builtin:") + b.name;
+    const scene::Scene sc = options.load ? options.load(arg) : load_scene_argument(arg);
+    CompareOptions co = options.compare;
+    co.out_dir = (fs::path(options.out_dir) / b.name).string();
+    std::cerr << fmt::format("{} ({}x{}):\n", arg, sc.camera.width, sc.camera.height);
+    nlohmann::json m;
+    const int rc = run_compare(arg, sc, co, &m);
+    status = std::max(status, rc);
+    m["scene"] = b.name;
+    m["report"] = std::string(b.name) + "/report.html";
+    summary.push_back(m);
+    const auto cell = [&](const char* key) { return m.contains(key) ? m[key].dump() : "null"; };
+    const nlohmann::json rtl = m.value("rtl", nlohmann::json());
+    const auto num = [&](const char* key, const char* f) {
+      return rtl.is_object() && rtl.contains(key) && rtl[key].is_number()
+                 ? fmt::format(fmt::runtime(f), rtl[key].get<double>())
+                 : std::string("—");
+    };
+    md += fmt::format("| {} | {}×{} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
+                      "{}/report.html |\n",
                       b.name, sc.camera.width, sc.camera.height,
-                      compiled.curve_segments.size() + compiled.texture_segments.size(),
-                      frames[0].hit_pixels(), frames[1].hit_pixels(), frames[2].hit_pixels(),
-                      cell(ip_f), cell(ref_ip), cell(ref_f), times[0], times[1], times[2]);
-    std::cout << fmt::format("{:<10} {}x{}  float-ip vs float {}, ref vs float-ip {}, ref vs float {}\n",
-                             b.name, sc.camera.width, sc.camera.height, ip_f.differ, ref_ip.differ,
-                             ref_f.differ);
+                      cell("rtl_vs_ref_mismatched_pixels"), cell("ref_vs_float_ip_mismatched_pixels"),
+                      cell("ref_vs_float_mismatched_pixels"),
+                      cell("float_ip_vs_float_mismatched_pixels"), cell("pairs"), cell("cycles"),
+                      cell("latency_cycles"), num("sim_seconds", "{:.1f}"),
+                      num("items_per_second", "{:.0f}"), num("cycles_per_second", "{:.0f}"),
+                      b.name);
+    rows_html += fmt::format("<tr><td><a href=\"{0}/report.html\">{0}</a></td><td>{1}&times;{2}</td>"
+                             "<td>{3}</td><td>{4}</td><td>{5}</td><td>{6}</td><td>{7}</td>"
+                             "<td>{8}</td></tr>\n",
+                             b.name, sc.camera.width, sc.camera.height,
+                             cell("rtl_vs_ref_mismatched_pixels"),
+                             cell("ref_vs_float_ip_mismatched_pixels"),
+                             cell("ref_vs_float_mismatched_pixels"),
+                             cell("float_ip_vs_float_mismatched_pixels"), cell("cycles"),
+                             rc == 0 ? "PASS" : "FAIL");
   }
   std::ofstream(fs::path(options.out_dir) / "summary.json") << summary.dump(2) << "\n";
   std::ofstream(fs::path(options.out_dir) / "summary.md") << md;
-  std::cout << "wrote " << (fs::path(options.out_dir) / "summary.md").string() << "\n";
-  return 0;
+  std::ofstream(fs::path(options.out_dir) / "index.html")
+      << "<!doctype html><html><head><meta charset=\"utf-8\"><title>rpu demo</title>"
+         "<style>body{font-family:sans-serif}td,th{padding:2px 8px;border-bottom:1px solid #ccc}"
+         "</style></head><body><h1>rpu demo: every built-in scene, every backend</h1>"
+         "<table><tr><th>scene</th><th>size</th><th>rtl vs ref</th><th>ref vs float-ip</th>"
+         "<th>ref vs float</th><th>float-ip vs float</th><th>cycles</th><th>RTL = model</th></tr>\n"
+      << rows_html << "</table></body></html>\n";
+  std::cout << "wrote " << (fs::path(options.out_dir) / "index.html").string() << " and "
+            << (fs::path(options.out_dir) / "summary.md").string() << "\n";
+  return status;
 }
 
 }  // namespace rpu::app

@@ -1,22 +1,26 @@
-// `rpu demo`: renders every built-in scene through every available backend and writes the
-// images and an agreement summary (summary.json, summary.md).
+// `rpu demo`: `rpu compare` on every built-in scene (every backend, the RTL checked against the
+// model), with an index page and a summary table (summary.md, summary.json) across scenes.
 #pragma once
 
+#include <functional>
 #include <string>
 
-#include "model/hw_params.h"
-#include "tracer/float_tracer.h"
+#include "compare.h"
+#include "scene/scene.h"
 
 namespace rpu::app {
 
+// A scene argument (file or builtin:NAME) → the scene.
+scene::Scene load_scene_argument(const std::string& argument);
+
 struct DemoOptions {
   std::string out_dir = "out/demo";
-  tracer::FloatOptions float_options;  // n, n1, threads, binning, grid
-  ref::HwParams hw;                    // the model's parameters
-  int max_side = 0;  // when > 0, scales each scene's resolution down to at most this side
+  CompareOptions compare;  // backends, --no-rtl; out_dir is set per scene
+  // Applies the size flags (--size, --max-side) to a loaded scene.
+  std::function<scene::Scene(const std::string&)> load;
 };
 
-// Returns the process exit status.
+// Returns the process exit status: 0 when the RTL equals the model on every scene.
 int run_demo(const DemoOptions& options);
 
 }  // namespace rpu::app

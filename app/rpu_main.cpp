@@ -2,10 +2,14 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 
+#include "backends.h"
 #include "builtin_scenes.h"
+#include "compare.h"
 #include "common/error.h"
 #include "demo.h"
 #include "image/image_io.h"
@@ -25,6 +29,12 @@ struct CommonFlags {
   int threads = 0;
   bool no_binning = false;
   bool no_grid = false;
+  std::string size;          // WxH: overrides the scene's resolution
+  int max_side = 0;          // scales the scene's resolution down to at most this side
+  bool systemc = false;
+  std::string trace_pixel;   // X,Y
+  std::string trace_out = "trace.fst";
+  bool rtl_fault = false;
 
   void add_to(CLI::App& app) {
     app.add_option("--n", hw.n, "result bits of the iterative process (K = n/n1 steps)")
@@ -51,6 +61,55 @@ struct CommonFlags {
     app.add_option("--threads", threads, "worker threads (0 = all cores)")->capture_default_str();
     app.add_flag("--no-binning", no_binning, "test every curve segment on every pixel");
     app.add_flag("--no-grid", no_grid, "test every texture segment on every pixel");
+    app.add_option("--size", size, "image size WxH, overriding the scene's camera");
+    app.add_option("--max-side", max_side, "scale the scene's image down to at most this side");
+    app.add_flag("--systemc", systemc, "rtl: use the SystemC harness (rpu_sc) instead of the C++ one");
+    app.add_option("--trace-pixel", trace_pixel,
+                   "rtl: re-run the work items of pixel X,Y with an FST waveform");
+    app.add_option("--trace-out", trace_out, "rtl: the waveform file of --trace-pixel")
+        ->capture_default_str();
+    app.add_flag("--rtl-fault", rtl_fault,
+                 "rtl: use the build with a deliberately injected fault (tests of the checker)");
+  }
+  // The scene with the size flags applied.
+  scene::Scene load(const std::string& arg) const {
+    scene::Scene sc = app::load_scene_argument(arg);
+    if (!size.empty()) {
+      int w = 0, h = 0;
+      char x = 0, extra = 0;
+      if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+          w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw Error("--size", "must be WxH with 1 <= W, H <= 16384, got '" + size + "'");
+      sc.camera.width = w;
+      sc.camera.height = h;
+    }
+    if (max_side < 0) throw Error("--max-side", "must be positive");
+    if (max_side > 0) {
+      const int side = std::max(sc.camera.width, sc.camera.height);
+      if (side > max_side) {
+        sc.camera.width = std::max(1, sc.camera.width * max_side / side);
+        sc.camera.height = std::max(1, sc.camera.height * max_side / side);
+      }
+    }
+    return sc;
+  }
+  app::BackendOptions backend_options() const {
+    app::BackendOptions o;
+    o.hw = params();
+    o.fl = float_options();
+    o.ref = ref_options();
+    o.systemc = systemc;
+    o.fault = rtl_fault;
+    o.trace_path = trace_out;
+    if (!trace_pixel.empty()) {
+      int x = -1, y = -1;
+      char c = 0, extra = 0;
+      if (std::sscanf(trace_pixel.c_str(), "%d%c%d%c", &x, &c, &y, &extra) != 3 || c != ',' ||
+          x < 0 || y < 0)
+        throw Error("--trace-pixel", "must be X,Y (pixel column and row), got '" + trace_pixel + "'");
+      o.trace_pixel = std::make_pair(x, y);
+    }
+    return o;
   }
   ref::HwParams params() const {
     ref::HwParams p = hw;
@@ -78,38 +137,43 @@ struct CommonFlags {
 
 int render(const std::string& scene_arg, const std::string& backend, const std::string& output,
            const CommonFlags& flags, bool quiet) {
-  tracer::FloatOptions o = flags.float_options();
-  if (backend != "float" && backend != "float-ip" && backend != "ref")
-    throw Error("--backend", "backend '" + backend + "' is not built yet (available: float, "
-                "float-ip, ref)");
+  const auto& names = app::backend_names();
+  if (std::find(names.begin(), names.end(), backend) == names.end())
+    throw Error("--backend", "unknown backend '" + backend + "' (float, float-ip, ref, rtl)");
+  const app::BackendOptions bo = flags.backend_options();
+  if ((bo.systemc || bo.trace_pixel || bo.fault) && backend != "rtl")
+    throw Error(bo.systemc ? "--systemc" : bo.fault ? "--rtl-fault" : "--trace-pixel",
+                "applies to --backend rtl only");
   image::check_writable(output);
-  const scene::CompiledScene sc = scene::compile_scene(app::load_scene_argument(scene_arg));
-  const auto t0 = std::chrono::steady_clock::now();
-  image::Frame frame;
-  std::uint64_t pairs = 0, overflows = 0;
-  if (backend == "ref") {
-    const ref::ModelScene model = ref::quantize_scene(sc, flags.params());
-    ref::RefStats stats;
-    frame = ref::render_ref(sc, model, flags.ref_options(), &stats);
-    pairs = stats.curve_pairs + stats.texture_pairs;
-    overflows = stats.overflow_pairs;
-  } else {
-    o.method = backend == "float" ? tracer::Method::kIdeal : tracer::Method::kIterative;
-    tracer::RenderStats stats;
-    frame = tracer::render_float(sc, o, &stats);
-    pairs = stats.pairs_tested + stats.texture_pairs_tested;
-  }
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const scene::CompiledScene sc = scene::compile_scene(flags.load(scene_arg));
+  const app::BackendResult r = app::run_backend(backend, sc, bo);
+  const image::Frame& frame = r.render.frame;
   std::vector<scene::Color> colors;
   for (const auto& p : sc.primitives) colors.push_back(p.color);
   image::write_rgb(output, frame.width, frame.height, image::to_rgb(frame, colors, sc.background));
   if (!quiet)
     std::cerr << fmt::format("{}: {}x{} {} in {:.3f} s, {} hit pixels, {} ray/segment pairs\n",
-                             output, frame.width, frame.height, backend, secs, frame.hit_pixels(),
-                             pairs);
-  if (overflows > 0)
+                             output, frame.width, frame.height, backend, r.render.seconds,
+                             frame.hit_pixels(), r.pairs);
+  if (r.overflows > 0)
     std::cerr << fmt::format("rpu: warning: {} work items saturated a datapath value; widen "
-                             "--coord-w or the fraction widths\n", overflows);
+                             "--coord-w or the fraction widths\n", r.overflows);
+  if (backend == "rtl") {
+    if (!quiet)
+      std::cerr << fmt::format("rtl ({} harness, {}): {} cycles, latency {}, {:.3f} items/cycle, "
+                               "{:.0f} items/s, {:.0f} cycles/s simulated\n",
+                               r.rtl["harness"].get<std::string>(),
+                               r.rtl["configuration"].get<std::string>(), r.rtl["cycles"].dump(),
+                               r.rtl["latency_cycles"].dump(), r.rtl["items_per_cycle"].get<double>(),
+                               r.rtl["items_per_second"].get<double>(),
+                               r.rtl["cycles_per_second"].get<double>());
+    for (const auto& line : r.reports) std::cerr << line << "\n";
+    if (!r.trace_log.empty()) std::cerr << r.trace_log;
+    if (!r.rtl_ok) {
+      std::cerr << "rpu: the RTL differs from the reference model (see above)\n";
+      return 2;
+    }
+  }
   return 0;
 }
 
@@ -118,7 +182,8 @@ int print_config(const CommonFlags& flags) {
   std::cout << p.describe()
             << fmt::format("threads    = {}\nbinning    = {}\ngrid       = {}\n",
                            flags.threads == 0 ? std::string("all") : std::to_string(flags.threads),
-                           flags.no_binning ? "off" : "on", flags.no_grid ? "off" : "on");
+                           flags.no_binning ? "off" : "on", flags.no_grid ? "off" : "on")
+            << "Verilated rpu_top configurations (--backend rtl):\n" << app::rtl_configurations();
   return 0;
 }
 
@@ -135,7 +200,8 @@ int main(int argc, char** argv) {
   bool quiet = false;
   render_cmd->add_option("scene", scene_arg, "scene file (JSON, SCENE.md) or builtin:NAME")
       ->required();
-  render_cmd->add_option("--backend,-b", backend, "float | float-ip | ref")->capture_default_str();
+  render_cmd->add_option("--backend,-b", backend, "float | float-ip | ref | rtl")
+      ->capture_default_str();
   render_cmd->add_option("-o,--output", output, "output image (.png, .exr, .ppm, ...)")->required();
   render_cmd->add_flag("-q,--quiet", quiet, "no timing line on stderr");
   flags.add_to(*render_cmd);
@@ -146,8 +212,18 @@ int main(int argc, char** argv) {
   auto* demo_cmd = app.add_subcommand("demo", "render every built-in scene with every backend");
   app::DemoOptions demo;
   demo_cmd->add_option("--out", demo.out_dir, "output directory")->capture_default_str();
-  demo_cmd->add_option("--max-side", demo.max_side, "scale scenes down to at most this side");
+  demo_cmd->add_flag("--no-rtl", demo.compare.skip_rtl, "skip the RTL (software backends only)");
   flags.add_to(*demo_cmd);
+
+  auto* compare_cmd = app.add_subcommand(
+      "compare", "render with every backend, check the RTL against the model, write a report");
+  std::string compare_scene;
+  app::CompareOptions compare;
+  compare_cmd->add_option("scene", compare_scene, "scene file (JSON) or builtin:NAME")->required();
+  compare_cmd->add_option("--out", compare.out_dir, "output directory")->required();
+  compare_cmd->add_flag("--no-rtl", compare.skip_rtl, "skip the RTL (software backends only)");
+  compare_cmd->add_flag("-q,--quiet", compare.quiet, "no progress on stderr");
+  flags.add_to(*compare_cmd);
 
   auto* list_cmd = app.add_subcommand("scenes", "list the built-in scenes");
 
@@ -155,9 +231,13 @@ int main(int argc, char** argv) {
   try {
     if (render_cmd->parsed()) return render(scene_arg, backend, output, flags, quiet);
     if (config_cmd->parsed()) return print_config(flags);
+    if (compare_cmd->parsed()) {
+      compare.backends = flags.backend_options();
+      return app::run_compare(compare_scene, flags.load(compare_scene), compare);
+    }
     if (demo_cmd->parsed()) {
-      demo.float_options = flags.float_options();
-      demo.hw = flags.params();
+      demo.compare.backends = flags.backend_options();
+      demo.load = [&](const std::string& arg) { return flags.load(arg); };
       return app::run_demo(demo);
     }
     if (list_cmd->parsed()) {

@@ -1,0 +1,86 @@
+#include "backends.h"
+
+#include <chrono>
+
+#include "common/error.h"
+#include "model/descriptors.h"
+#if RPU_HAVE_RTL
+#include "rtl_backend.h"
+#endif
+
+namespace rpu::app {
+
+bool rtl_built() { return RPU_HAVE_RTL != 0; }
+
+std::string rtl_configurations() {
+#if RPU_HAVE_RTL
+  return sim::describe_rtl_configs();
+#else
+  return "  (none: this rpu is built without the co-simulation, RPU_SIM=OFF)\n";
+#endif
+}
+
+BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
+                          const BackendOptions& o) {
+  BackendResult r;
+  r.render.name = backend;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (backend == "float" || backend == "float-ip") {
+    tracer::FloatOptions fo = o.fl;
+    fo.method = backend == "float" ? tracer::Method::kIdeal : tracer::Method::kIterative;
+    tracer::RenderStats stats;
+    r.render.frame = tracer::render_float(sc, fo, &stats);
+    r.pairs = stats.pairs_tested + stats.texture_pairs_tested;
+  } else if (backend == "ref") {
+    const ref::ModelScene model = ref::quantize_scene(sc, o.hw);
+    ref::RefStats stats;
+    r.render.frame = ref::render_ref(sc, model, o.ref, &stats);
+    r.pairs = stats.curve_pairs + stats.texture_pairs;
+    r.overflows = stats.overflow_pairs;
+  } else if (backend == "rtl") {
+#if RPU_HAVE_RTL
+    const ref::ModelScene model = ref::quantize_scene(sc, o.hw);
+    sim::RtlOptions ro;
+    ro.ref = o.ref;
+    ro.systemc = o.systemc;
+    ro.fault = o.fault;
+    ro.trace_pixel = o.trace_pixel;
+    ro.trace_path = o.trace_path;
+    const sim::RtlRender rr = sim::render_rtl(sc, model, ro);
+    r.render.frame = rr.frame;
+    r.pairs = rr.stats.items;
+    r.reports = rr.reports;
+    r.rtl_ok = rr.ok;
+    r.trace_log = rr.trace_log;
+    const sim::CosimStats& s = rr.stats;
+    r.rtl = {{"harness", rr.harness},
+             {"configuration", rr.config},
+             {"cycles", s.cycles},
+             {"pairs", s.items},
+             {"curve_pairs", s.curve_items},
+             {"texture_pairs", s.texture_items},
+             {"pixels_with_work", s.pixels},
+             {"latency_cycles", s.latency_cycles},
+             {"stall_cycles", s.stall_cycles},
+             {"load_cycles", s.load_cycles},
+             {"items_per_cycle", s.items_per_cycle()},
+             {"sim_seconds", s.sim_seconds},
+             {"items_per_second", s.sim_seconds > 0 ? s.items / s.sim_seconds : 0.0},
+             {"cycles_per_second", s.sim_seconds > 0 ? s.cycles / s.sim_seconds : 0.0},
+             {"item_mismatches", rr.item_mismatches},
+             {"pixel_stream_mismatches", rr.pixel_mismatches},
+             {"timed_out", s.timed_out}};
+    if (rr.first_bad.first >= 0)
+      r.rtl["first_mismatch_pixel"] = {rr.first_bad.first, rr.first_bad.second};
+#else
+    throw Error("--backend rtl", "this rpu is built without the co-simulation (RPU_SIM=OFF)");
+#endif
+  } else {
+    throw Error("--backend", "unknown backend '" + backend + "' (float, float-ip, ref, rtl)");
+  }
+  r.render.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace rpu::app

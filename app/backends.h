@@ -1,0 +1,53 @@
+// The four backends of SCENE.md behind one call: float, float-ip, ref and rtl (the Verilated
+// rpu_top, when this program is built with the co-simulation, RPU_SIM=ON).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare_report.h"
+#include "model/hw_params.h"
+#include "model/ref_renderer.h"
+#include "scene/compiled_scene.h"
+#include "tracer/float_tracer.h"
+
+namespace rpu::app {
+
+struct BackendOptions {
+  ref::HwParams hw;                 // the model's and the RTL's parameters
+  tracer::FloatOptions fl;          // n, n1, threads, binning, grid of the float tracers
+  ref::RefOptions ref;              // threads, binning, grid of the model (and the RTL schedule)
+  bool systemc = false;             // rtl: the SystemC harness instead of the C++ one
+  bool fault = false;               // rtl: the fault-injected build (checker tests)
+  std::optional<std::pair<int, int>> trace_pixel;  // rtl: re-run a pixel with a waveform
+  std::string trace_path = "trace.fst";
+};
+
+struct BackendResult {
+  BackendRender render;
+  std::uint64_t pairs = 0, overflows = 0;  // work items processed, of which saturated
+  nlohmann::json rtl;                      // rtl only: co-simulation statistics
+  std::vector<std::string> reports;        // rtl only: mismatch records
+  bool rtl_ok = true;                      // rtl only: equal to the model on every item and pixel
+  std::string trace_log;                   // rtl only: what --trace-pixel did
+};
+
+inline const std::vector<std::string>& backend_names() {
+  static const std::vector<std::string> names = {"float", "float-ip", "ref", "rtl"};
+  return names;
+}
+
+// True when this program contains the RTL co-simulation.
+bool rtl_built();
+// The Verilated configurations this program contains, one per line.
+std::string rtl_configurations();
+
+// Renders with one backend; throws rpu::Error for an unknown backend or one not built in.
+BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
+                          const BackendOptions& o);
+
+}  // namespace rpu::app

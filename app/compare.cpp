@@ -1,0 +1,79 @@
+#include "compare.h"
+
+#include <filesystem>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+#include "scene/compiled_scene.h"
+
+namespace rpu::app {
+
+namespace {
+
+nlohmann::json config_json(const BackendOptions& o) {
+  const ref::HwParams& p = o.hw;
+  return {{"n", p.n},
+          {"n1", p.n1},
+          {"K", p.K()},
+          {"coord_w", p.coord_w},
+          {"dir_frac", p.dir_frac},
+          {"t_frac", p.t_frac},
+          {"unit_frac", p.unit_frac},
+          {"edge_frac", p.edge_frac},
+          {"inv_w", p.inv_w},
+          {"sqrt_w", p.sqrt_w},
+          {"metric", p.metric == ref::Metric::kAbs ? "abs" : "squared"},
+          {"ip", p.unrolled ? "unrolled" : "iterative"},
+          {"binning", o.ref.binning},
+          {"grid", o.ref.grid},
+          {"harness", o.systemc ? "systemc" : "c++"}};
+}
+
+}  // namespace
+
+int run_compare(const std::string& scene_arg, const scene::Scene& scene,
+                const CompareOptions& o, nlohmann::json* metrics_out) {
+  namespace fs = std::filesystem;
+  const scene::CompiledScene sc = scene::compile_scene(scene);
+  CompareInput in;
+  in.scene = scene_arg;
+  for (const auto& p : sc.primitives) in.colors.push_back(p.color);
+  in.background = sc.background;
+  in.config = config_json(o.backends);
+  bool rtl_ok = false, rtl_ran = false;
+  for (const std::string& b : backend_names()) {
+    if (b == "rtl" && o.skip_rtl) continue;
+    BackendResult r = run_backend(b, sc, o.backends);
+    if (!o.quiet)
+      std::cerr << fmt::format("  {:<8} {:>8.3f} s  {} hit pixels, {} pairs\n", b,
+                               r.render.seconds, r.render.frame.hit_pixels(), r.pairs);
+    if (b == "rtl") {
+      rtl_ran = true;
+      rtl_ok = r.rtl_ok;
+      in.rtl = r.rtl;
+      in.mismatch_lines = r.reports;
+      if (!r.trace_log.empty()) std::cerr << r.trace_log;
+    }
+    in.renders.push_back(std::move(r.render));
+  }
+  const CompareSummary s = write_compare_report(in, o.out_dir);
+  if (metrics_out) *metrics_out = s.metrics;
+  const bool pass = rtl_ran && rtl_ok && s.rtl_equals_ref;
+  if (!o.quiet) {
+    std::cerr << fmt::format("{}: {}x{}, rtl vs ref {} px, ref vs float-ip {} px, ref vs float "
+                             "{} px, float-ip vs float {} px\n",
+                             scene_arg, scene.camera.width, scene.camera.height,
+                             s.metrics.value("rtl_vs_ref_mismatched_pixels", nlohmann::json()).dump(),
+                             s.metrics["ref_vs_float_ip_mismatched_pixels"].dump(),
+                             s.metrics["ref_vs_float_mismatched_pixels"].dump(),
+                             s.metrics["float_ip_vs_float_mismatched_pixels"].dump());
+    for (const auto& line : in.mismatch_lines) std::cerr << line << "\n";
+    std::cerr << fmt::format("{}: report {}\n", pass ? "PASS" : (rtl_ran ? "FAIL" : "NO RTL"),
+                             (fs::path(o.out_dir) / "report.html").string());
+  }
+  return pass ? 0 : 2;
+}
+
+}  // namespace rpu::app

@@ -1,0 +1,24 @@
+// `rpu compare SCENE --out DIR` (SCENE.md): every backend on one scene, the RTL checked against
+// the model work item by work item, and the report (compare_report.h).
+#pragma once
+
+#include <string>
+
+#include "backends.h"
+#include "scene/scene.h"
+
+namespace rpu::app {
+
+struct CompareOptions {
+  std::string out_dir;
+  BackendOptions backends;
+  bool skip_rtl = false;   // --no-rtl: the three software backends only
+  bool quiet = false;
+};
+
+// Exit status: 0 when the RTL equals the model on every pixel (and every work item), 2 when it
+// does not (or the RTL was not run), errors throw rpu::Error.
+int run_compare(const std::string& scene_arg, const scene::Scene& scene,
+                const CompareOptions& o, nlohmann::json* metrics_out = nullptr);
+
+}  // namespace rpu::app

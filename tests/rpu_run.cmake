@@ -1,0 +1,32 @@
+# Runs one rpu command and checks its exit status, its stderr and the files it must write:
+#   cmake -DRPU=rpu "-DARGS=a;b;c" -DEXPECT_RC=0 "-DEXPECT_ERR=regex;..." "-DFILES=f;..."
+#         [-DNOT_ERR=regex] -P rpu_run.cmake
+# Every EXPECT_ERR regex must match stderr; NOT_ERR must not; every file in FILES must exist and
+# be non-empty. On failure the whole stderr is printed.
+execute_process(COMMAND ${RPU} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "rpu ${ARGS}\n-- exit ${rc}\n${err}")
+set(bad "")
+if(NOT rc STREQUAL "${EXPECT_RC}")
+  string(APPEND bad "exit status ${rc}, expected ${EXPECT_RC}; ")
+endif()
+foreach(re IN LISTS EXPECT_ERR)
+  if(NOT err MATCHES "${re}")
+    string(APPEND bad "stderr lacks /${re}/; ")
+  endif()
+endforeach()
+if(DEFINED NOT_ERR AND err MATCHES "${NOT_ERR}")
+  string(APPEND bad "stderr has /${NOT_ERR}/; ")
+endif()
+foreach(f IN LISTS FILES)
+  if(NOT EXISTS "${f}")
+    string(APPEND bad "missing ${f}; ")
+  else()
+    file(SIZE "${f}" sz)
+    if(sz EQUAL 0)
+      string(APPEND bad "empty ${f}; ")
+    endif()
+  endif()
+endforeach()
+if(bad)
+  message(FATAL_ERROR "FAILED: ${bad}")
+endif()

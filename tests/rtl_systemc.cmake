@@ -1,0 +1,35 @@
+# The SystemC harness against the C++ harness on the same Verilated configuration: the same
+# image (byte for byte) and the same cycle count, and both equal to the model.
+#   cmake -DRPU=rpu -DOUT=dir "-DARGS=scene;flags..." -P rtl_systemc.cmake
+file(MAKE_DIRECTORY ${OUT})
+foreach(h cpp sc)
+  set(extra "")
+  if(h STREQUAL "sc")
+    set(extra --systemc)
+  endif()
+  execute_process(COMMAND ${RPU} render ${ARGS} --backend rtl ${extra} -o ${OUT}/${h}.png
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  message(STATUS "${h}: exit ${rc}\n${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "FAILED: the ${h} harness exited ${rc}")
+  endif()
+  if(NOT err MATCHES "rtl \\(([a-z+]+) harness, [^)]*\\): ([0-9]+) cycles, latency ([0-9]+)")
+    message(FATAL_ERROR "FAILED: no cycle count from the ${h} harness")
+  endif()
+  set(${h}_harness ${CMAKE_MATCH_1})
+  set(${h}_cycles ${CMAKE_MATCH_2})
+  set(${h}_latency ${CMAKE_MATCH_3})
+endforeach()
+if(NOT cpp_harness STREQUAL "c++" OR NOT sc_harness STREQUAL "systemc")
+  message(FATAL_ERROR "FAILED: harnesses ${cpp_harness} / ${sc_harness}")
+endif()
+if(NOT cpp_cycles EQUAL sc_cycles OR NOT cpp_latency EQUAL sc_latency)
+  message(FATAL_ERROR "FAILED: C++ ${cpp_cycles} cycles (latency ${cpp_latency}), SystemC "
+                      "${sc_cycles} cycles (latency ${sc_latency})")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/cpp.png ${OUT}/sc.png
+                RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "FAILED: the two harnesses' images differ")
+endif()
+message(STATUS "same image, ${cpp_cycles} cycles, latency ${cpp_latency} in both harnesses")
