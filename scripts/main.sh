@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Sets up everything (system packages), builds, and runs the main job: every built-in demo
-# scene through every backend, images and the agreement summary under out/demo/.
+# Sets up everything (system packages), builds, and runs the main job: `rpu compare` on every
+# built-in demo scene (float, float-ip, the bit-accurate model and the Verilated RTL, every RTL
+# pixel checked against the model), reports under out/demo/. Extra arguments go to `rpu demo`
+# (e.g. --size 256x256, --max-side 128).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh
-./build/rpu demo --out out/demo "$@"
-echo "Open out/demo/summary.md (images beside it)."
+status=0
+./build/rpu demo --out out/demo "$@" || status=$?
+echo "Report: out/demo/index.html (per scene: out/demo/<scene>/report.html; summary.md)"
+exit $status

@@ -28,11 +28,13 @@ sim::FrameSchedule repeat_items(const sim::FrameSchedule& f, std::size_t count) 
   r.items.clear();
   r.expected.clear();
   r.expected_pixels.clear();
+  r.curve_items = r.texture_items = 0;
   for (std::size_t k = 0; k < count; ++k) {
     sim::WorkItem it = f.items[k % f.items.size()];
     sim::ItemResult e = f.expected[k % f.items.size()];
     it.id = e.id = static_cast<std::uint32_t>(k);
     it.last = e.last = true;
+    (it.texture ? r.texture_items : r.curve_items)++;
     r.items.push_back(it);
     r.expected.push_back(e);
     r.expected_pixels.push_back({e.i, e.j, e.hit, e.hit ? e.depth : 0, e.hit ? e.primitive : 0});
