@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "backends.h"
@@ -12,6 +13,7 @@
 #include "compare.h"
 #include "common/error.h"
 #include "demo.h"
+#include "sweep.h"
 #include "image/image_io.h"
 #include "model/ref_renderer.h"
 #include "scene/compiled_scene.h"
@@ -225,6 +227,21 @@ int main(int argc, char** argv) {
   compare_cmd->add_flag("-q,--quiet", compare.quiet, "no progress on stderr");
   flags.add_to(*compare_cmd);
 
+  auto* sweep_cmd = app.add_subcommand(
+      "sweep", "hardware-parameter sweep: accuracy, RTL cycles and resources per configuration");
+  app::SweepOptions sweep;
+  sweep_cmd->add_option("sweep", sweep.file, "sweep description (JSON, docs/sweeps.md)")
+      ->required();
+  sweep_cmd->add_option("--out", sweep.out_dir, "output directory")->required();
+  sweep_cmd->add_option("-j,--jobs", sweep.jobs, "configurations in parallel (0 = all cores)")
+      ->capture_default_str();
+  sweep_cmd->add_flag("--no-rtl", sweep.no_rtl, "skip the co-simulated sample");
+  sweep_cmd->add_flag("--no-yosys", sweep.no_yosys, "skip the Yosys resource estimates");
+  sweep_cmd->add_flag("--emit-jobs", sweep.emit_jobs,
+                      "write jobs.txt (one command per configuration) and merge.sh, run nothing");
+  sweep_cmd->add_option("--config", sweep.config, "run only this configuration (a jobs.txt line)");
+  sweep_cmd->add_flag("--merge", sweep.merge, "only collect the results and write the report");
+
   auto* list_cmd = app.add_subcommand("scenes", "list the built-in scenes");
 
   CLI11_PARSE(app, argc, argv);
@@ -239,6 +256,12 @@ int main(int argc, char** argv) {
       demo.compare.backends = flags.backend_options();
       demo.load = [&](const std::string& arg) { return flags.load(arg); };
       return app::run_demo(demo);
+    }
+    if (sweep_cmd->parsed()) {
+      std::error_code ec;
+      sweep.self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+      if (ec) sweep.self = argv[0];
+      return app::run_sweep(sweep);
     }
     if (list_cmd->parsed()) {
       for (const auto& b : app::builtin_scenes()) std::cout << "builtin:" << b.name << "\n";

@@ -8,6 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libopenimageio-dev openimageio-tools
   verilator libsystemc-dev yosys
+  parallel
 )
 missing=()
 for p in "${packages[@]}"; do
