@@ -108,6 +108,11 @@ struct Spec {
   bool yosys = false;
   std::string yosys_module = "rpu_ip_step";
   int yosys_timeout = 3600;
+  // "scale": "ip_candidates" — the module is rpu_candidate and the row's resources are its
+  // counts times the candidate evaluators of the configuration's K-step process
+  // (K·(2^n1 − 1) + 2 unrolled, 2^n1 + 1 iterative): the dominant cost, synthesised once per
+  // width set instead of the whole IP (hours per configuration).
+  bool scale_ip_candidates = false;
   std::string fingerprint;  // what a stored result must match to be reused
 };
 
@@ -185,6 +190,12 @@ Spec parse_spec(const std::string& path) {
       s.yosys = y.value("enabled", true);
       s.yosys_module = y.value("module", s.yosys_module);
       s.yosys_timeout = y.value("timeout", s.yosys_timeout);
+      const std::string scale = y.value("scale", "");
+      if (!scale.empty() && scale != "ip_candidates")
+        throw Error(path + ": yosys.scale", "must be \"ip_candidates\" or absent");
+      s.scale_ip_candidates = scale == "ip_candidates";
+      if (s.scale_ip_candidates && s.yosys_module != "rpu_candidate")
+        throw Error(path + ": yosys.scale", "ip_candidates needs module rpu_candidate");
       if (!std::regex_match(s.yosys_module, std::regex("rpu_[a-z0-9_]+")))
         throw Error(path + ": yosys.module", "must name an rtl/ module (rpu_...)");
     } else throw Error(path + ": yosys", "must be true, false or {enabled, module, timeout}");
@@ -196,7 +207,7 @@ Spec parse_spec(const std::string& path) {
 std::string fingerprint(const Spec& s) {
   return hash_hex(json({{"scenes", s.scenes}, {"w", s.width}, {"h", s.height}, {"rtl", s.rtl},
                         {"rw", s.rtl_width}, {"rh", s.rtl_height}, {"yosys", s.yosys},
-                        {"ym", s.yosys_module}}).dump());
+                        {"ym", s.yosys_module}, {"scale", s.scale_ip_candidates}}).dump());
 }
 
 struct Config {
@@ -347,6 +358,17 @@ void yosys_resources(const Spec& s, const Config& c, const fs::path& cache, json
   row["longest_path_levels"] = num("Longest path (levels)");
   row["yosys_seconds"] = num("Yosys s");
   row["yosys_status"] = row["lut"].is_null() ? (m.count("LUT") ? m["LUT"] : "failed") : "ok";
+  if (s.scale_ip_candidates && row["yosys_status"] == "ok") {
+    const int J = 1 << c.params.n1, K = c.params.n / c.params.n1;
+    const int count = c.params.unrolled ? K * (J - 1) + 2 : J + 1;
+    for (const char* k : {"lut", "ff", "dsp", "carry4", "bram"}) {
+      row[std::string("module_") + k] = row[k];
+      if (!row[k].is_null()) row[k] = row[k].get<double>() * count;
+    }
+    row["yosys_basis"] = fmt::format("{} x {} candidate evaluators", s.yosys_module, count);
+  } else {
+    row["yosys_basis"] = s.yosys_module;
+  }
 }
 
 // ---- one configuration ----
@@ -504,8 +526,8 @@ int merge(const Spec& s, const std::vector<Config>& configs, const fs::path& out
   for (const auto& pn : kParams) cols.push_back(pn.key);
   for (const char* c : {"K", "pixels_total", "ref_vs_float_ip_total", "ref_vs_float_total",
                         "rtl_status", "rtl_cycles", "rtl_latency_cycles", "rtl_items",
-                        "rtl_items_per_cycle", "yosys_status", "yosys_module", "lut", "ff", "dsp",
-                        "bram", "carry4", "longest_path_levels"})
+                        "rtl_items_per_cycle", "yosys_status", "yosys_module", "yosys_basis", "lut", "ff",
+                        "dsp", "bram", "carry4", "longest_path_levels"})
     cols.push_back(c);
   std::string csv;
   for (size_t k = 0; k < cols.size(); ++k) csv += (k ? "," : "") + cols[k];
