@@ -18,6 +18,11 @@
 #   -k DIR              keep the Yosys scripts, logs and reports in DIR (default: a temporary dir)
 #   -n                  dry run: print each module's configuration and files, run nothing
 #   -P DIR              no synthesis: tabulate again the files an earlier run kept in DIR (-k)
+#   -H                  hierarchical: synth_xilinx without -flatten, each distinct submodule
+#                       synthesised once, totals from `stat -top` (the design hierarchy's counts
+#                       times the instances); no cross-module optimisation and no longest path.
+#                       Makes rpu_ip and rpu_top at the defaults (26 candidate evaluators)
+#                       feasible in minutes instead of hours
 #   -h                  this help
 # The Markdown table goes to stdout, progress to stderr. Exit status 1 if a run failed (an
 # error, not a timeout or a skipped module).
@@ -82,7 +87,7 @@ ALL=(rpu_resolve rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guid
 
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
-jobs_max=1 tlimit=1200 mlimit=8000 md_out="" csv_out="" keep="" reduced_mode="" dry=0 reparse=""
+jobs_max=1 tlimit=1200 mlimit=8000 md_out="" csv_out="" keep="" reduced_mode="" dry=0 reparse="" hier=0
 declare -A OVERRIDE=()
 specs=()
 while (($#)); do
@@ -96,6 +101,7 @@ while (($#)); do
     -m) mlimit=$2; shift 2 ;;
     -n) dry=1; shift ;;
     -P) reparse=$2; shift 2 ;;
+    -H) hier=1; shift ;;
     -r|--reduced) reduced_mode=only; shift ;;
     -R) reduced_mode=both; shift ;;
     -G) m=${2%%:*}; OVERRIDE[$m]="${OVERRIDE[$m]:-} ${2#*:}"; shift 2 ;;
@@ -174,7 +180,9 @@ files_of() {
 # header[2..] in order, other cell types (if any).
 tabulate() {
   local tag=$1 mod=$2 config=$3 secs=$4
-  awk -v mod="$mod" -v config="$config" -v secs="$secs" -v work="$work" -v tag="$tag" '
+  local h=0
+  [[ -e $work/$tag.hier ]] && h=1
+  awk -v mod="$mod" -v config="$config" -v secs="$secs" -v work="$work" -v tag="$tag" -v hier="$h" '
     function load(cls,   f, line) {
       f = work "/" tag ".cells." cls
       while ((getline line < f) > 0) {
@@ -191,7 +199,12 @@ tabulate() {
       lr["RAM32X1D"] = 2; lr["RAM64X1D"] = 2; lr["RAM128X1D"] = 4; lr["RAM32M"] = 4
       lr["RAM64M"] = 4; lr["RAM32M16"] = 8; lr["RAM64M8"] = 8; lr["RAM512X1S"] = 8
       f = work "/" tag ".stat"
+      # Hierarchical: only the design-hierarchy totals count (after its "Number of cells").
+      counting = !hier
       while ((getline line < f) > 0) {
+        if (hier && line ~ /=== design hierarchy ===/) { section = 1; continue }
+        if (hier && section && line ~ /Number of cells:/) { counting = 1; continue }
+        if (!counting) continue
         if (line ~ /Estimated number of LCs:/) { n = split(line, a, " "); lcs = a[n]; continue }
         n = split(line, a, " ")
         if (n != 2 || a[2] !~ /^[0-9]+$/) continue
@@ -211,7 +224,7 @@ tabulate() {
       }
       close(f)
       f = work "/" tag ".ltp"
-      len = "?"
+      len = hier ? "- (per module)" : "?"
       while ((getline line < f) > 0) {
         if (match(line, /\(length=-?[0-9]+\)/)) { len = substr(line, RSTART + 8, RLENGTH - 9); continue }
         if (line !~ /\(via .*\)[ \t\r]*$/) continue
@@ -265,6 +278,7 @@ run_one() {
   params="${merged[*]}"
   local config=${params:-defaults}
   if ((red)); then config="$config (reduced)"; fi
+  if ((hier)); then config="$config (hierarchical)"; fi
 
   if ! files=$(files_of "$mod"); then
     printf '%s\t%s\tskipped (no %s)\n' "$mod" "$config" "$files" >"$work/$tag.row"
@@ -276,6 +290,16 @@ run_one() {
   local sel="$mod/t:FD* $mod/t:LD* %u $mod/t:SRL* %u $mod/t:RAMB* %u"
   sel="$sel $mod/t:DSP48E1 r:MREG>0 %i %u $mod/t:DSP48E1 r:PREG>0 %i %u"
   local comb="r:MREG<1 %i r:PREG<1 %i"
+  if ((hier)); then
+    # Totals over the hierarchy; no cell lists and no ltp (paths stop at module boundaries).
+    cat >"$work/$tag.ys" <<EOF
+read_verilog $flist
+hierarchy -check -top $mod$chparam
+synth_xilinx -noiopad -noclkbuf -top $mod
+tee -q -o $work/$tag.stat stat -tech xilinx -top $mod
+EOF
+    : >"$work/$tag.hier"
+  else
   cat >"$work/$tag.ys" <<EOF
 read_verilog $flist
 hierarchy -check -top $mod$chparam
@@ -293,6 +317,7 @@ chtype -set RPU_LTP_DSP48E1_B $mod/t:DSP48E1 r:BREG>0 %i $comb
 select -set breaks $sel
 tee -q -o $work/$tag.ltp ltp -noff $mod/* @breaks %d
 EOF
+  fi
   if ((dry)); then
     echo "$spec: $config: $flist"
     return 0
