@@ -105,6 +105,9 @@ struct Spec {
   ref::HwParams base;
   bool rtl = true;
   int rtl_width = 32, rtl_height = 32;
+  // Verilate configurations the rpu executable does not contain (RPU_COSIM_ONLY build under
+  // DIR/rtl_build, one cosim_<id> per configuration, kept across runs).
+  bool rtl_build = false;
   bool yosys = false;
   std::string yosys_module = "rpu_ip_step";
   int yosys_timeout = 3600;
@@ -179,9 +182,10 @@ Spec parse_spec(const std::string& path) {
     if (r.is_boolean()) s.rtl = r.get<bool>();
     else if (r.is_object()) {
       s.rtl = r.value("enabled", true);
+      s.rtl_build = r.value("build", false);
       if (r.contains("resolution"))
         std::tie(s.rtl_width, s.rtl_height) = read_size(r["resolution"], path + ": rtl.resolution");
-    } else throw Error(path + ": rtl", "must be true, false or {enabled, resolution}");
+    } else throw Error(path + ": rtl", "must be true, false or {enabled, resolution, build}");
   }
   if (j.contains("yosys")) {
     const json& y = j["yosys"];
@@ -207,7 +211,8 @@ Spec parse_spec(const std::string& path) {
 std::string fingerprint(const Spec& s) {
   return hash_hex(json({{"scenes", s.scenes}, {"w", s.width}, {"h", s.height}, {"rtl", s.rtl},
                         {"rw", s.rtl_width}, {"rh", s.rtl_height}, {"yosys", s.yosys},
-                        {"ym", s.yosys_module}, {"scale", s.scale_ip_candidates}}).dump());
+                        {"ym", s.yosys_module}, {"scale", s.scale_ip_candidates},
+                        {"rb", s.rtl_build}}).dump());
 }
 
 struct Config {
@@ -371,8 +376,78 @@ void yosys_resources(const Spec& s, const Config& c, const fs::path& cache, json
   }
 }
 
+#if RPU_HAVE_RTL
+bool built_in(const ref::HwParams& p) {
+  for (const auto& rc : sim::rtl_configs())
+    if (!rc.fault && sim::same_hardware(rc.params, p)) return true;
+  return false;
+}
+#endif
+
+std::string cosim_name(const Config& c) { return "c" + c.id; }
+
+// "N=16,N1=2,..." for RPU_COSIM_CONFIGS.
+std::string verilog_params(const Config& c) {
+  std::string out;
+  for (const auto& pn : kParams) {
+    const json& v = c.params_json[pn.key];
+    const std::string value = v.is_string() ? (pn.key == std::string("ip")
+                                                   ? (v == "unrolled" ? "1" : "0")
+                                                   : (v == "abs" ? "0" : "1"))
+                                            : v.dump();
+    out += fmt::format("{}{}={}", out.empty() ? "" : ",", pn.verilog, value);
+  }
+  return out;
+}
+
+// Builds the co-simulation executables the sweep needs and this rpu does not contain; returns
+// configuration id → executable for every one that exists afterwards.
+std::map<std::string, std::string> build_cosim(const Spec& s, const std::vector<const Config*>& todo,
+                                               const fs::path& out, int jobs) {
+  std::map<std::string, std::string> exes;
+#if RPU_HAVE_RTL
+  const fs::path dir = out / "rtl_build";
+  std::string list;
+  size_t need = 0;
+  for (const Config* c : todo) {
+    try {
+      c->params.validate();
+    } catch (const Error&) {
+      continue;
+    }
+    if (built_in(c->params)) continue;
+    const fs::path exe = dir / ("cosim_" + cosim_name(*c));
+    if (!fs::exists(exe)) ++need;
+    list += (list.empty() ? "" : ";") + cosim_name(*c) + ":" + verilog_params(*c);
+  }
+  if (need > 0) {
+    std::cerr << fmt::format("rpu sweep: Verilating {} configurations into {} (log: {})\n", need,
+                             dir.string(), (dir / "build.log").string());
+    fs::create_directories(dir);
+    const std::string cmd = fmt::format(
+        "cmake -S '{}' -B '{}' -G Ninja -DRPU_COSIM_ONLY=ON '-DRPU_COSIM_CONFIGS={}' > '{}' 2>&1 && "
+        "ninja -C '{}' -k 0 -j {} >> '{}' 2>&1",
+        RPU_SOURCE_DIR, dir.string(), list, (dir / "build.log").string(), dir.string(),
+        std::max(1, jobs), (dir / "build.log").string());
+    if (std::system(cmd.c_str()) != 0)
+      std::cerr << "rpu sweep: some co-simulation builds failed; their rows say so (see the log)\n";
+  }
+  for (const Config* c : todo) {
+    const fs::path exe = dir / ("cosim_" + cosim_name(*c));
+    if (fs::exists(exe)) exes[c->id] = exe.string();
+  }
+#else
+  (void)s;
+  (void)todo;
+  (void)out;
+  (void)jobs;
+#endif
+  return exes;
+}
+
 // ---- one configuration ----
-json run_config(const Spec& s, const Config& c, const fs::path& out, FloatCache& floats) {
+json run_config(const Spec& s, const Config& c, const fs::path& out, FloatCache& floats,
+                const std::map<std::string, std::string>& external) {
   json row = c.params_json;
   row["config_id"] = c.id;
   row["fingerprint"] = s.fingerprint;
@@ -418,11 +493,10 @@ json run_config(const Spec& s, const Config& c, const fs::path& out, FloatCache&
     row["rtl_status"] = "off";
     if (s.rtl) {
 #if RPU_HAVE_RTL
-      bool built = false;
-      for (const auto& rc : sim::rtl_configs())
-        built |= !rc.fault && sim::same_hardware(rc.params, c.params);
-      if (!built) {
-        row["rtl_status"] = "no build";
+      const bool built = built_in(c.params);
+      const auto ext = external.find(c.id);
+      if (!built && ext == external.end()) {
+        row["rtl_status"] = s.rtl_build ? "build failed" : "no build";
       } else {
         scene::Scene scn = load_scene_argument(s.scenes.front());
         scn.camera.width = s.rtl_width;
@@ -431,6 +505,7 @@ json run_config(const Spec& s, const Config& c, const fs::path& out, FloatCache&
         const ref::ModelScene model = ref::quantize_scene(sc, c.params);
         sim::RtlOptions ro;
         ro.ref.threads = 1;
+        if (!built) ro.external_exe = ext->second;
         const sim::RtlRender rr = sim::render_rtl(sc, model, ro);
         row["rtl_status"] = rr.ok ? "ok" : "failed";
         row["rtl_cycles"] = rr.stats.cycles;
@@ -600,6 +675,11 @@ int run_sweep(const SweepOptions& o) {
   std::cerr << fmt::format("rpu sweep: {} configurations, {} done earlier, {} to run\n",
                            o.config.empty() ? configs.size() : 1,
                            (o.config.empty() ? configs.size() : 1) - todo.size(), todo.size());
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned n = o.jobs > 0 ? static_cast<unsigned>(o.jobs) : hw;
+  const std::map<std::string, std::string> external =
+      s.rtl && s.rtl_build ? build_cosim(s, todo, out, static_cast<int>(n))
+                           : std::map<std::string, std::string>{};
   FloatCache floats;
   std::atomic<size_t> next{0}, done{0};
   std::mutex print_mu;
@@ -608,7 +688,7 @@ int run_sweep(const SweepOptions& o) {
     for (size_t k; (k = next.fetch_add(1)) < todo.size();) {
       const Config& c = *todo[k];
       const auto t1 = std::chrono::steady_clock::now();
-      json row = run_config(s, c, out, floats);
+      json row = run_config(s, c, out, floats, external);
       write_text(result_file(out, c.id), row.dump(2) + "\n");
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
@@ -624,8 +704,6 @@ int run_sweep(const SweepOptions& o) {
                                total / d * (todo.size() - d));
     }
   };
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned n = o.jobs > 0 ? static_cast<unsigned>(o.jobs) : hw;
   {
     std::vector<std::jthread> pool;
     for (unsigned t = 1; t < std::min<size_t>(n, todo.size()); ++t) pool.emplace_back(worker);

@@ -3,6 +3,7 @@
 #                     resumed sweep recomputes nothing (same files, "0 to run")
 #   -DMODE=jobs       --emit-jobs, the jobs run with GNU parallel, merge.sh collects them
 #   -DMODE=isolation  invalid and failing configurations are recorded, the others finish
+#   -DMODE=rtl_build  a configuration without a Verilated model in rpu is Verilated on demand
 # Other variables: RPU (the executable), SWEEP (the sweep file), OUT (output directory).
 file(REMOVE_RECURSE ${OUT})
 
@@ -132,6 +133,15 @@ elseif(MODE STREQUAL "isolation")
   endif()
   if(NOT rows MATCHES "not a multiple of n1")
     message(FATAL_ERROR "FAILED: the invalid rows do not say why")
+  endif()
+elseif(MODE STREQUAL "rtl_build")
+  run_rpu(0 sweep ${SWEEP} --out ${OUT})
+  if(NOT err MATCHES "Verilating 1 configurations")
+    message(FATAL_ERROR "FAILED: no on-demand Verilator build")
+  endif()
+  read_csv()
+  if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
+    message(FATAL_ERROR "FAILED: no co-simulated sample from the on-demand build: ${rows}")
   endif()
 else()
   message(FATAL_ERROR "unknown MODE ${MODE}")

@@ -19,7 +19,7 @@ void load(TopPorts& top, const FrameSchedule& f) {
 
 }  // namespace
 
-CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, Scoreboard& sb,
+CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
                        const CosimOptions& o) {
   CosimStats st;
   load(top, f);

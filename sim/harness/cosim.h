@@ -33,7 +33,7 @@ struct CosimStats {
 };
 
 // Loads the descriptors into `top` (after a reset) and runs every item of `f`.
-CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, Scoreboard& sb,
+CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
                        const CosimOptions& o = {});
 
 // Only the work items of pixel (i, j), with an FST waveform (the configuration must be

@@ -32,15 +32,9 @@ std::filesystem::path self_dir() {
   return ec ? std::filesystem::current_path() : exe.parent_path();
 }
 
-// Runs rpu_sc on the schedule; returns its recorded streams.
-StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::string* config) {
-  if (!same_hardware(f.params, systemc_params()) || o.fault)
-    throw Error("--systemc", "the SystemC model is built for " + describe(systemc_params()) +
-                             " only (add --ip iterative at the default widths)");
-  const std::string exe = o.sc_exe.empty() ? (self_dir() / "rpu_sc").string() : o.sc_exe;
-  if (!std::filesystem::exists(exe))
-    throw Error("--systemc", "the SystemC harness " + exe + " is not built (configure with "
-                "RPU_SIM=ON and SystemC installed)");
+// Runs a harness executable (rpu_sc, or a sweep's cosim_<name>) on the schedule; returns its
+// recorded streams.
+StreamRecord run_external(const std::string& exe, const FrameSchedule& f, const RtlOptions& o) {
   std::error_code ec;
   const auto dir = std::filesystem::temp_directory_path(ec) /
                    fmt::format("rpu_sc_{}_{}", ::getpid(), reinterpret_cast<std::uintptr_t>(&f));
@@ -55,18 +49,29 @@ StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::strin
   argv.push_back(nullptr);
   pid_t pid = 0;
   if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    throw Error(exe, "cannot start the SystemC harness");
+    throw Error(exe, "cannot start the harness");
   int status = 0;
   waitpid(pid, &status, 0);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::filesystem::remove_all(dir, ec);
-    throw Error(exe, fmt::format("the SystemC harness failed (status {})",
+    throw Error(exe, fmt::format("the harness failed (status {})",
                                  WIFEXITED(status) ? WEXITSTATUS(status) : -1));
   }
   StreamRecord r = read_streams(out);
   std::filesystem::remove_all(dir, ec);
-  *config = "systemc:" + describe(f.params);
   return r;
+}
+
+StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::string* config) {
+  if (!same_hardware(f.params, systemc_params()) || o.fault)
+    throw Error("--systemc", "the SystemC model is built for " + describe(systemc_params()) +
+                             " only (add --ip iterative at the default widths)");
+  const std::string exe = o.sc_exe.empty() ? (self_dir() / "rpu_sc").string() : o.sc_exe;
+  if (!std::filesystem::exists(exe))
+    throw Error("--systemc", "the SystemC harness " + exe + " is not built (configure with "
+                "RPU_SIM=ON and SystemC installed)");
+  *config = "systemc:" + describe(f.params);
+  return run_external(exe, f, o);
 }
 
 }  // namespace
@@ -87,13 +92,19 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
   const RtlConfig* cfg = nullptr;
   for (const RtlConfig& c : rtl_configs())
     if (c.fault == o.fault && same_hardware(c.params, m.params)) cfg = &c;
-  if (o.systemc) {
-    out.harness = "systemc";
-    const StreamRecord r = run_systemc(f, o, &out.config);
+  if (o.systemc || !o.external_exe.empty()) {
+    out.harness = o.systemc ? "systemc" : "c++ (external)";
+    StreamRecord r;
+    if (o.systemc) {
+      r = run_systemc(f, o, &out.config);
+    } else {
+      r = run_external(o.external_exe, f, o);
+      out.config = std::filesystem::path(o.external_exe).filename().string();
+    }
     for (const ItemResult& x : r.results) sb.on_result(x);
     for (const PixelResult& x : r.pixels) sb.on_pixel(x);
     out.stats = r.stats;
-    if (r.stats.timed_out) sb.note("TIMEOUT in the SystemC harness");
+    if (r.stats.timed_out) sb.note("TIMEOUT in the " + out.harness + " harness");
   } else {
     if (!cfg) {
       std::string names;

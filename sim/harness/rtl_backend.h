@@ -20,6 +20,7 @@ struct RtlOptions {
   ref::RefOptions ref;          // threads, binning, grid (the schedule is render_ref's)
   bool systemc = false;         // run the SystemC harness (rpu_sc) instead of the C++ one
   std::string sc_exe;           // rpu_sc; empty: beside the running executable
+  std::string external_exe;     // a cosim_<name> executable (rpu sweep's on-demand builds)
   CosimOptions cosim;           // handshake patterns
   bool fault = false;           // the fault-injected build (tests of the checker)
   std::uint64_t x_seed = 0;     // random initial register values (0: Verilator's default)
