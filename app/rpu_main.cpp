@@ -211,7 +211,8 @@ int main(int argc, char** argv) {
   auto* config_cmd = app.add_subcommand("config", "print the effective parameter set");
   flags.add_to(*config_cmd);
 
-  auto* demo_cmd = app.add_subcommand("demo", "render every built-in scene with every backend");
+  auto* demo_cmd = app.add_subcommand(
+      "demo", "rpu compare on every built-in scene: every backend, the RTL checked, index.html");
   app::DemoOptions demo;
   demo_cmd->add_option("--out", demo.out_dir, "output directory")->capture_default_str();
   demo_cmd->add_flag("--no-rtl", demo.compare.skip_rtl, "skip the RTL (software backends only)");

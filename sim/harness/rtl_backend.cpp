@@ -79,8 +79,8 @@ StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::strin
 std::string describe_rtl_configs() {
   std::string s;
   for (const RtlConfig& c : rtl_configs())
-    s += fmt::format("  {}{}: {}\n", c.name, c.fault ? " (fault-injected, tests only)" : "",
-                     describe(c.params));
+    s += fmt::format("  {}{}{}: {}\n", c.name, c.fault ? " (fault-injected, tests only)" : "",
+                     c.traceable ? " (FST-traceable)" : "", describe(c.params));
   return s.empty() ? "  (none: configure with RPU_SIM=ON)\n" : s;
 }
 
