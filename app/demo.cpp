@@ -1,6 +1,9 @@
 #include "demo.h"
 
+#include <atomic>
 #include <chrono>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -47,14 +50,53 @@ int run_demo(const DemoOptions& options) {
       hw.unrolled ? "unrolled" : "iterative");
   std::string rows_html;
   int status = 0;
-  for (const auto& b : builtin_scenes()) {
+  // The scenes run concurrently, one per core (each co-simulation is single-threaded); each
+  // scene's renders then use one thread, and its progress is printed when it is done.
+  const auto& scenes = builtin_scenes();
+  std::vector<scene::Scene> loaded;
+  for (const auto& b : scenes) {
     const std::string arg = std::string("builtin:") + b.name;
-    const scene::Scene sc = options.load ? options.load(arg) : load_scene_argument(arg);
-    CompareOptions co = options.compare;
-    co.out_dir = (fs::path(options.out_dir) / b.name).string();
-    std::cerr << fmt::format("{} ({}x{}):\n", arg, sc.camera.width, sc.camera.height);
-    nlohmann::json m;
-    const int rc = run_compare(arg, sc, co, &m);
+    loaded.push_back(options.load ? options.load(arg) : load_scene_argument(arg));
+  }
+  std::vector<nlohmann::json> metrics(scenes.size());
+  std::vector<int> codes(scenes.size(), 0);
+  std::vector<std::string> errors(scenes.size());
+  std::atomic<size_t> next{0};
+  std::mutex print_mu;
+  const auto worker = [&] {
+    for (size_t k; (k = next.fetch_add(1)) < scenes.size();) {
+      const std::string arg = std::string("builtin:") + scenes[k].name;
+      CompareOptions co = options.compare;
+      co.out_dir = (fs::path(options.out_dir) / scenes[k].name).string();
+      co.quiet = true;
+      co.backends.fl.threads = 1;
+      co.backends.ref.threads = 1;
+      try {
+        codes[k] = run_compare(arg, loaded[k], co, &metrics[k]);
+      } catch (const std::exception& e) {
+        errors[k] = e.what();
+        codes[k] = 1;
+      }
+      std::lock_guard<std::mutex> lock(print_mu);
+      std::cerr << fmt::format("{} ({}x{}): {}\n", arg, loaded[k].camera.width,
+                               loaded[k].camera.height,
+                               !errors[k].empty() ? "error: " + errors[k]
+                               : codes[k] == 0    ? "PASS, rtl == ref"
+                                                  : "FAIL, see " + co.out_dir + "/report.html");
+    }
+  };
+  {
+    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < std::min<size_t>(hw, scenes.size()); ++t) pool.emplace_back(worker);
+    worker();
+  }
+  for (size_t k = 0; k < scenes.size(); ++k) {
+    if (!errors[k].empty()) throw Error("", errors[k]);  // already names the scene
+    const auto& b = scenes[k];
+    const scene::Scene& sc = loaded[k];
+    nlohmann::json& m = metrics[k];
+    const int rc = codes[k];
     status = std::max(status, rc);
     m["scene"] = b.name;
     m["report"] = std::string(b.name) + "/report.html";

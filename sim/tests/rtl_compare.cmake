@@ -32,6 +32,14 @@ add_test(NAME rtl_compare_airfield_full COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_
          -DEXPECT_RC=0 "-DEXPECT_ERR=PASS: report" -P ${RPU_RUN})
 list(APPEND rtl_tests rtl_compare_airfield_full)
 
+# The main job's command at a small size: every scene compared concurrently, the index written.
+add_test(NAME rtl_demo COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=demo;--max-side;40;--out;${RPU_CMP_OUT}/demo"
+         -DEXPECT_RC=0 "-DEXPECT_ERR=builtin:curve12 \\(40x40\\): PASS;builtin:airfield \\(40x30\\): PASS"
+         "-DFILES=${RPU_CMP_OUT}/demo/index.html;${RPU_CMP_OUT}/demo/summary.md;${RPU_CMP_OUT}/demo/ellipse6/metrics.json"
+         -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_demo)
+
 # The SystemC harness: same image and cycle count as the C++ harness (iterative defaults).
 if(TARGET rpu_sc)
   foreach(scene curve12 airfield)
