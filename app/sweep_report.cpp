@@ -434,7 +434,8 @@ Figure line_figure(const std::vector<const json*>& rows, std::string_view x_key,
   for (std::string_view p : kSweepParameters) {
     const bool wanted = std::find(by.begin(), by.end(), p) != by.end() ||
                         std::find(varying.begin(), varying.end(), p) != varying.end();
-    if (wanted && p != x_key) key_params.push_back(p);
+    // K = n/n1 is derived: it varies along the n1 axis without making a series of its own.
+    if (wanted && p != x_key && p != "K") key_params.push_back(p);
   }
   const auto series_key = [&](const json& row) {
     json key = json::array();

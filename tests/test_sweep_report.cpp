@@ -76,7 +76,7 @@ std::string svg_problem(const std::string& s) {
 // One ok row of the sweep; null measurements are written as JSON null.
 json ok_row(const std::string& id, int n, int n1, int coord_w, json lut, json vs_float,
             json vs_float_ip, json latency) {
-  return {{"config_id", id}, {"status", "ok"}, {"n", n}, {"n1", n1}, {"K", 4},
+  return {{"config_id", id}, {"status", "ok"}, {"n", n}, {"n1", n1}, {"K", n / n1},
           {"coord_w", coord_w}, {"dir_frac", 12}, {"t_frac", 10}, {"unit_frac", 14},
           {"edge_frac", 10}, {"inv_w", 18}, {"sqrt_w", 16}, {"metric", "abs"},
           {"ip", "unrolled"}, {"pixels_total", 4096}, {"ref_vs_float_ip_total", vs_float_ip},
