@@ -10,6 +10,20 @@
 
 namespace rpu::app {
 
+nlohmann::json hw_params_json(const ref::HwParams& p) {
+  return {{"n", p.n},
+          {"n1", p.n1},
+          {"coord_w", p.coord_w},
+          {"dir_frac", p.dir_frac},
+          {"t_frac", p.t_frac},
+          {"unit_frac", p.unit_frac},
+          {"edge_frac", p.edge_frac},
+          {"inv_w", p.inv_w},
+          {"sqrt_w", p.sqrt_w},
+          {"metric", p.metric == ref::Metric::kAbs ? "abs" : "squared"},
+          {"ip", p.unrolled ? "unrolled" : "iterative"}};
+}
+
 bool rtl_built() { return RPU_HAVE_RTL != 0; }
 
 std::string rtl_configurations() {

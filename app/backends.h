@@ -41,6 +41,10 @@ inline const std::vector<std::string>& backend_names() {
   return names;
 }
 
+// The hardware parameters as a JSON object ({"n": 16, ..., "metric": "abs", "ip": "unrolled"}),
+// for reports and sweep results.
+nlohmann::json hw_params_json(const ref::HwParams& p);
+
 // True when this program contains the RTL co-simulation.
 bool rtl_built();
 // The Verilated configurations this program contains, one per line.

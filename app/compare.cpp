@@ -13,22 +13,12 @@ namespace rpu::app {
 namespace {
 
 nlohmann::json config_json(const BackendOptions& o) {
-  const ref::HwParams& p = o.hw;
-  return {{"n", p.n},
-          {"n1", p.n1},
-          {"K", p.K()},
-          {"coord_w", p.coord_w},
-          {"dir_frac", p.dir_frac},
-          {"t_frac", p.t_frac},
-          {"unit_frac", p.unit_frac},
-          {"edge_frac", p.edge_frac},
-          {"inv_w", p.inv_w},
-          {"sqrt_w", p.sqrt_w},
-          {"metric", p.metric == ref::Metric::kAbs ? "abs" : "squared"},
-          {"ip", p.unrolled ? "unrolled" : "iterative"},
-          {"binning", o.ref.binning},
-          {"grid", o.ref.grid},
-          {"harness", o.systemc ? "systemc" : "c++"}};
+  nlohmann::json j = hw_params_json(o.hw);
+  j["K"] = o.hw.K();
+  j["binning"] = o.ref.binning;
+  j["grid"] = o.ref.grid;
+  j["harness"] = o.systemc ? "systemc" : "c++";
+  return j;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "report_text.h"
 
 namespace rpu::app {
 namespace {
@@ -267,28 +268,13 @@ HeatMap heat_map(const std::vector<PairResult>& pairs, int width, int height, co
 // ---------------------------------------------------------------------------------------------
 // report.html
 
-std::string escape(std::string_view text) {
-  std::string s;
-  s.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': s += "&amp;"; break;
-      case '<': s += "&lt;"; break;
-      case '>': s += "&gt;"; break;
-      case '"': s += "&quot;"; break;
-      case '\'': s += "&#39;"; break;
-      default: s += c;
-    }
-  }
-  return s;
-}
 
 // A JSON value as table text: strings bare, null as "—", everything else as JSON.
 std::string cell(const nlohmann::json& v) {
   if (v.is_null()) return "—";
-  if (v.is_string()) return escape(v.get<std::string>());
-  if (v.is_number_float()) return escape(fmt::format("{:.6g}", v.get<double>()));
-  return escape(v.dump());
+  if (v.is_string()) return escape_html(v.get<std::string>());
+  if (v.is_number_float()) return escape_html(fmt::format("{:.6g}", v.get<double>()));
+  return escape_html(v.dump());
 }
 
 // Rows "a.b.c | value" for a nested JSON object (arrays stay whole).
@@ -303,12 +289,12 @@ void flatten(const nlohmann::json& v, const std::string& prefix,
 }
 
 std::string key_value_table(const nlohmann::json& v, std::string_view when_empty) {
-  if (v.is_null() || (v.is_object() && v.empty())) return fmt::format("<p>{}</p>\n", escape(when_empty));
+  if (v.is_null() || (v.is_object() && v.empty())) return fmt::format("<p>{}</p>\n", escape_html(when_empty));
   std::vector<std::pair<std::string, nlohmann::json>> rows;
   flatten(v, "", rows);
   std::string html = "<table>\n<tr><th>parameter</th><th>value</th></tr>\n";
   for (const auto& [key, value] : rows)
-    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", escape(key), cell(value));
+    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", escape_html(key), cell(value));
   return html + "</table>\n";
 }
 
@@ -316,7 +302,7 @@ std::string figure(const WrittenImage& w, const std::string& caption_html) {
   return fmt::format(
       "<figure><a href=\"{0}\"><img src=\"{1}\" width=\"{2}\" height=\"{3}\" alt=\"{4}\"></a>"
       "<figcaption>{5}</figcaption></figure>\n",
-      escape(w.file), escape(w.shown), w.shown_width, w.shown_height, escape(w.file), caption_html);
+      escape_html(w.file), escape_html(w.shown), w.shown_width, w.shown_height, escape_html(w.file), caption_html);
 }
 
 std::string swatch(const std::string& css) {
@@ -373,13 +359,13 @@ std::string report_html(const ReportParts& r) {
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>rpu compare: {0}</title>\n<style>{1}</style>\n</head>\n<body>\n"
       "<h1>rpu compare: {0}</h1>\n<p>{2}×{3} = {4} pixels.</p>\n",
-      escape(in.scene), kStyle, m["width"].get<int>(), m["height"].get<int>(), m["pixels"].get<size_t>());
+      escape_html(in.scene), kStyle, m["width"].get<int>(), m["height"].get<int>(), m["pixels"].get<size_t>());
   html += banner(in, m);
 
   html += "<h2>Renders</h2>\n<div class=\"gallery\">\n";
   for (size_t k = 0; k < in.renders.size(); ++k) {
     const BackendRender& b = in.renders[k];
-    html += figure(r.renders[k], fmt::format("<b>{}</b>: {} hit pixels, {:.3f} s", escape(b.name),
+    html += figure(r.renders[k], fmt::format("<b>{}</b>: {} hit pixels, {:.3f} s", escape_html(b.name),
                                              b.frame.hit_pixels(), b.seconds));
   }
   html += "</div>\n";
@@ -397,7 +383,7 @@ std::string report_html(const ReportParts& r) {
     for (const PairResult& p : r.pairs)
       html += figure(p.image, fmt::format("<b>{0}</b> vs <b>{1}</b>: {2} pixels differ<br>"
                                           "only {0}: {3}, only {1}: {4}, different primitive: {5}",
-                                          escape(p.a), escape(p.b), p.mismatched, p.only_a, p.only_b,
+                                          escape_html(p.a), escape_html(p.b), p.mismatched, p.only_a, p.only_b,
                                           p.different_primitive));
     html += "</div>\n";
   }
@@ -405,14 +391,14 @@ std::string report_html(const ReportParts& r) {
   html += fmt::format(
       "<h2>Disagreement heat map</h2>\n<p>Per pixel, how many of the {} compared pairs disagree "
       "(colour map \"{}\"): ",
-      r.heat.pairs, escape(kHeatColorMap));
+      r.heat.pairs, escape_html(kHeatColorMap));
   for (int d = 0; d <= r.heat.pairs; ++d)
     html += fmt::format("{}{} ({} px){}", swatch(r.heat.legend[static_cast<size_t>(d)]), d,
                         r.heat.histogram[static_cast<size_t>(d)], d < r.heat.pairs ? ", " : ".");
   std::string compared;
   for (const PairResult& p : r.pairs) compared += (compared.empty() ? "" : ", ") + p.a + " vs " + p.b;
   html += "</p>\n<div class=\"gallery\">\n" +
-          figure(r.heat.image, "pairs: " + escape(compared.empty() ? "none" : compared)) + "</div>\n";
+          figure(r.heat.image, "pairs: " + escape_html(compared.empty() ? "none" : compared)) + "</div>\n";
 
   html += "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>value</th></tr>\n";
   for (const char* key : {"pixels", "rtl_vs_ref_mismatched_pixels", "ref_vs_float_ip_mismatched_pixels",
@@ -422,7 +408,7 @@ std::string report_html(const ReportParts& r) {
   html += "</table>\n<table>\n<tr><th>backend</th><th>hit pixels</th><th>seconds</th></tr>\n";
   for (const BackendRender& b : in.renders)
     html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td></tr>\n",
-                        escape(b.name), b.frame.hit_pixels(), b.seconds);
+                        escape_html(b.name), b.frame.hit_pixels(), b.seconds);
   html += "</table>\n";
   if (!r.pairs.empty()) {
     html += "<table>\n<tr><th>a vs b</th><th>differ</th><th>hit only in a</th><th>hit only in b</th>"
@@ -431,7 +417,7 @@ std::string report_html(const ReportParts& r) {
       html += fmt::format(
           "<tr><td>{} vs {}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
           "<td class=\"num\">{}</td><td class=\"num\">{}</td></tr>\n",
-          escape(p.a), escape(p.b), p.mismatched, p.only_a, p.only_b, p.different_primitive);
+          escape_html(p.a), escape_html(p.b), p.mismatched, p.only_a, p.only_b, p.different_primitive);
     html += "</table>\n";
   }
 
@@ -442,19 +428,12 @@ std::string report_html(const ReportParts& r) {
     html += "<p>None recorded.</p>\n";
   } else {
     html += "<pre>";
-    for (const std::string& line : in.mismatch_lines) html += escape(line) + "\n";
+    for (const std::string& line : in.mismatch_lines) html += escape_html(line) + "\n";
     html += "</pre>\n";
   }
   return html + "</body>\n</html>\n";
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(path.string(), std::string("cannot open for writing: ") + std::strerror(errno));
-  out << text;
-  out.close();
-  if (!out) throw Error(path.string(), "cannot write the file");
-}
 
 }  // namespace
 
@@ -528,8 +507,8 @@ CompareSummary write_compare_report(const CompareInput& in, const std::string& o
                         {"pairs_compared", compared},
                         {"pixels_by_disagreeing_pairs", heat.histogram}};
 
-  write_text(dir / "metrics.json", metrics.dump(2) + "\n");
-  write_text(dir / "report.html", report_html({in, metrics, render_images, pairs, heat}));
+  write_text_file(dir / "metrics.json", metrics.dump(2) + "\n");
+  write_text_file(dir / "report.html", report_html({in, metrics, render_images, pairs, heat}));
   return {metrics, rtl_equals_ref};
 }
 

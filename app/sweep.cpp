@@ -16,7 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "backends.h"
 #include "demo.h"
+#include "report_text.h"
 #include "model/descriptors.h"
 #include "model/ref_renderer.h"
 #include "scene/compiled_scene.h"
@@ -44,18 +46,12 @@ constexpr ParamName kParams[] = {
     {"t_frac", "TFrac"},  {"unit_frac", "UnitFrac"}, {"edge_frac", "EdgeFrac"}, {"inv_w", "InvW"},
     {"sqrt_w", "SqrtW"},  {"metric", "Metric"},     {"ip", "Unrolled"}};
 
-json params_json(const ref::HwParams& p) {
-  return {{"n", p.n},
-          {"n1", p.n1},
-          {"coord_w", p.coord_w},
-          {"dir_frac", p.dir_frac},
-          {"t_frac", p.t_frac},
-          {"unit_frac", p.unit_frac},
-          {"edge_frac", p.edge_frac},
-          {"inv_w", p.inv_w},
-          {"sqrt_w", p.sqrt_w},
-          {"metric", p.metric == ref::Metric::kAbs ? "abs" : "squared"},
-          {"ip", p.unrolled ? "unrolled" : "iterative"}};
+// A parameter's Verilog value: integers as they are, metric abs/squared 0/1, ip unrolled 1.
+std::string verilog_value(const ParamName& pn, const json& params) {
+  const json& v = params[pn.key];
+  if (!v.is_string()) return v.dump();
+  if (pn.key == std::string("ip")) return v == "unrolled" ? "1" : "0";
+  return v == "abs" ? "0" : "1";
 }
 
 // Sets one parameter from a JSON value; `where` names it for errors.
@@ -229,7 +225,7 @@ std::vector<Config> expand(const Spec& s) {
     c.params = s.base;
     for (size_t k = 0; k < s.grid.size(); ++k)
       set_param(c.params, s.grid[k].first, s.grid[k].second[idx[k]], s.grid[k].first);
-    c.params_json = params_json(c.params);
+    c.params_json = hw_params_json(c.params);
     c.id = hash_hex(c.params_json.dump());
     out.push_back(c);
     size_t k = 0;
@@ -304,11 +300,7 @@ void yosys_resources(const Spec& s, const Config& c, const fs::path& cache, json
   std::string gargs, key = s.yosys_module;
   for (const auto& pn : kParams) {
     if (std::find(declared.begin(), declared.end(), pn.verilog) == declared.end()) continue;
-    const json& v = c.params_json[pn.key];
-    const std::string value = v.is_string() ? (pn.key == std::string("ip")
-                                                   ? (v == "unrolled" ? "1" : "0")
-                                                   : (v == "abs" ? "0" : "1"))
-                                            : v.dump();
+    const std::string value = verilog_value(pn, c.params_json);
     gargs += fmt::format(" -G {}:{}={}", s.yosys_module, pn.verilog, value);
     key += fmt::format(" {}={}", pn.verilog, value);
   }
@@ -379,7 +371,7 @@ void yosys_resources(const Spec& s, const Config& c, const fs::path& cache, json
 #if RPU_HAVE_RTL
 bool built_in(const ref::HwParams& p) {
   for (const auto& rc : sim::rtl_configs())
-    if (!rc.fault && sim::same_hardware(rc.params, p)) return true;
+    if (!rc.fault && rc.params == p) return true;
   return false;
 }
 #endif
@@ -390,11 +382,7 @@ std::string cosim_name(const Config& c) { return "c" + c.id; }
 std::string verilog_params(const Config& c) {
   std::string out;
   for (const auto& pn : kParams) {
-    const json& v = c.params_json[pn.key];
-    const std::string value = v.is_string() ? (pn.key == std::string("ip")
-                                                   ? (v == "unrolled" ? "1" : "0")
-                                                   : (v == "abs" ? "0" : "1"))
-                                            : v.dump();
+    const std::string value = verilog_value(pn, c.params_json);
     out += fmt::format("{}{}={}", out.empty() ? "" : ",", pn.verilog, value);
   }
   return out;
@@ -546,16 +534,6 @@ bool reusable(const fs::path& f, const std::string& fingerprint) {
   }
 }
 
-void write_text(const fs::path& f, const std::string& text) {
-  const fs::path tmp = f.string() + ".tmp";
-  {
-    std::ofstream o(tmp);
-    if (!o) throw Error(tmp.string(), "cannot write");
-    o << text;
-    if (!o) throw Error(tmp.string(), "write failed");
-  }
-  fs::rename(tmp, f);  // atomic: an interrupted sweep never leaves half a result
-}
 
 std::string csv_escape(const json& v) {
   if (v.is_null()) return "";
@@ -619,8 +597,8 @@ int merge(const Spec& s, const std::vector<Config>& configs, const fs::path& out
     }
     csv += "," + csv_escape(r.contains("error") ? r["error"] : json(nullptr)) + "\n";
   }
-  write_text(out / "results.csv", csv);
-  write_text(out / "results.json", rows.dump(2) + "\n");
+  write_text_file(out / "results.csv", csv);
+  write_text_file(out / "results.json", rows.dump(2) + "\n");
   const SweepPlots plots = write_sweep_report(rows, out.string(), "rpu sweep: " + s.path);
   std::cerr << fmt::format("rpu sweep: {} configurations, {} failed, {} not run; Pareto front: {}\n"
                            "rpu sweep: wrote {}\n", rows.size(), failed, missing,
@@ -644,8 +622,8 @@ int run_sweep(const SweepOptions& o) {
       jobs += fmt::format("'{}' sweep '{}' --out '{}' --config {}{}{}\n", o.self,
                           fs::absolute(o.file).string(), fs::absolute(out).string(), c.id,
                           o.no_rtl ? " --no-rtl" : "", o.no_yosys ? " --no-yosys" : "");
-    write_text(out / "jobs.txt", jobs);
-    write_text(out / "merge.sh",
+    write_text_file(out / "jobs.txt", jobs);
+    write_text_file(out / "merge.sh",
                fmt::format("#!/bin/sh\n# Collects the per-configuration results of {} into "
                            "results.csv, results.json and index.html.\nexec '{}' sweep '{}' --out "
                            "'{}' --merge\n", o.file, o.self, fs::absolute(o.file).string(),
@@ -689,7 +667,7 @@ int run_sweep(const SweepOptions& o) {
       const Config& c = *todo[k];
       const auto t1 = std::chrono::steady_clock::now();
       json row = run_config(s, c, out, floats, external);
-      write_text(result_file(out, c.id), row.dump(2) + "\n");
+      write_text_file(result_file(out, c.id), row.dump(2) + "\n");
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
       const double total =

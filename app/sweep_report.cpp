@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "report_text.h"
 
 namespace rpu::app {
 namespace {
@@ -188,21 +189,6 @@ Axis make_axis(const std::vector<double>& values, bool from_zero, bool integral)
 // ---------------------------------------------------------------------------------------------
 // Figures and their SVG
 
-std::string escape(std::string_view text) {
-  std::string s;
-  s.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': s += "&amp;"; break;
-      case '<': s += "&lt;"; break;
-      case '>': s += "&gt;"; break;
-      case '"': s += "&quot;"; break;
-      case '\'': s += "&#39;"; break;
-      default: s += c;
-    }
-  }
-  return s;
-}
 
 struct Point {
   double x = 0, y = 0;
@@ -264,7 +250,7 @@ std::string svg_panel(const Panel& panel, const Axis& x_axis, const Axis* shared
                       const Figure& figure, double top) {
   std::string svg = fmt::format("<g class=\"panel\">\n<text x=\"{}\" y=\"{}\" font-size=\"14\" "
                                 "font-weight=\"bold\">{}</text>\n",
-                                coord(kPlotLeft), coord(top - 8), escape(panel.title));
+                                coord(kPlotLeft), coord(top - 8), escape_html(panel.title));
   const double left = kPlotLeft, bottom = top + kPlotHeight, right = kPlotLeft + kPlotWidth;
   size_t point_count = 0;
   for (const Series& s : panel.series) point_count += s.points.size();
@@ -274,7 +260,7 @@ std::string svg_panel(const Panel& panel, const Axis& x_axis, const Axis* shared
                        "text-anchor=\"middle\" fill=\"#666\">no data: {}</text>\n</g>\n",
                        coord(left), coord(top), coord(kPlotWidth), coord(kPlotHeight),
                        coord(left + kPlotWidth / 2), coord(top + kPlotHeight / 2),
-                       escape(figure.no_data));
+                       escape_html(figure.no_data));
     return svg;
   }
 
@@ -298,15 +284,15 @@ std::string svg_panel(const Panel& panel, const Axis& x_axis, const Axis* shared
                      coord(left), coord(top), coord(kPlotWidth), coord(kPlotHeight));
   for (double t : x_axis.ticks)
     svg += fmt::format("<text class=\"x-tick\" x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                       coord(px(t)), coord(bottom + 16), escape(x_axis.label(t)));
+                       coord(px(t)), coord(bottom + 16), escape_html(x_axis.label(t)));
   for (double t : y_axis.ticks)
     svg += fmt::format("<text class=\"y-tick\" x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n",
-                       coord(left - 6), coord(py(t) + 4), escape(y_axis.label(t)));
+                       coord(left - 6), coord(py(t) + 4), escape_html(y_axis.label(t)));
   svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                     coord(left + kPlotWidth / 2), coord(bottom + 40), escape(figure.x_label));
+                     coord(left + kPlotWidth / 2), coord(bottom + 40), escape_html(figure.x_label));
   svg += fmt::format("<text x=\"{0}\" y=\"{1}\" text-anchor=\"middle\" "
                      "transform=\"rotate(-90 {0} {1})\">{2}</text>\n",
-                     coord(left - 70), coord(top + kPlotHeight / 2), escape(panel.y_label));
+                     coord(left - 70), coord(top + kPlotHeight / 2), escape_html(panel.y_label));
 
   // Lines under the points, labels on top.
   for (const Series& s : panel.series) {
@@ -328,13 +314,13 @@ std::string svg_panel(const Panel& panel, const Axis& x_axis, const Axis* shared
     for (const Point& q : s.points)
       svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"#222\" "
                          "stroke-width=\"0.5\"><title>{}</title></circle>\n",
-                         coord(px(q.x)), coord(py(q.y)), s.radius, s.colour, escape(q.tooltip));
+                         coord(px(q.x)), coord(py(q.y)), s.radius, s.colour, escape_html(q.tooltip));
   for (const Series& s : panel.series)
     for (const Point& q : s.points)
       if (!q.label.empty())
         svg += fmt::format("<text class=\"point-label\" x=\"{}\" y=\"{}\" font-size=\"10\" "
                            "fill=\"#333\">{}</text>\n",
-                           coord(px(q.x) + 5), coord(py(q.y) - 5), escape(q.label));
+                           coord(px(q.x) + 5), coord(py(q.y) - 5), escape_html(q.label));
   return svg + "</g>\n";
 }
 
@@ -358,7 +344,7 @@ std::string svg_legend(const Figure& figure, size_t& rows) {
     svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"8\" height=\"8\" fill=\"{}\" stroke=\"#222\" "
                        "stroke-width=\"0.5\"/>\n<text x=\"{}\" y=\"{}\">{}</text>\n",
                        coord(kLegendLeft + 8), coord(y - 4), s->colour, coord(kLegendLeft + 32),
-                       coord(y + 4), escape(s->name));
+                       coord(y + 4), escape_html(s->name));
     y += kLegendRow;
   }
   return svg + "</g>\n";
@@ -384,7 +370,7 @@ std::string svg_figure(const Figure& figure) {
       "viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
       "<title>{2}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n"
       "<text x=\"{3}\" y=\"24\" font-size=\"16\" font-weight=\"bold\">{2}</text>\n",
-      kWidth, height, escape(figure.title), coord(kPlotLeft));
+      kWidth, height, escape_html(figure.title), coord(kPlotLeft));
   for (size_t k = 0; k < figure.panels.size(); ++k)
     svg += svg_panel(figure.panels[k], x_axis, figure.share_y ? &shared_y : nullptr, figure,
                      kTop + k * kPanelHeight + kPanelTitle);
@@ -534,9 +520,9 @@ Figure mismatches_vs_coord_w(const std::vector<const json*>& rows, const std::st
 // A JSON value as table text: strings bare, null or missing as "—", numbers compact.
 std::string cell(const json* v) {
   if (!v || v->is_null()) return "—";
-  if (v->is_string()) return escape(v->get<std::string>());
-  if (v->is_number_float()) return escape(fmt::format("{:.6g}", v->get<double>()));
-  return escape(v->dump());
+  if (v->is_string()) return escape_html(v->get<std::string>());
+  if (v->is_number_float()) return escape_html(fmt::format("{:.6g}", v->get<double>()));
+  return escape_html(v->dump());
 }
 
 // "scene: ip / float of pixels" per scene.
@@ -544,7 +530,7 @@ std::string scenes_cell(const json* scenes) {
   if (!scenes || !scenes->is_object() || scenes->empty()) return "—";
   std::string html;
   for (const auto& [name, s] : scenes->items())
-    html += fmt::format("{}{}: {} / {} of {}", html.empty() ? "" : "<br>", escape(name),
+    html += fmt::format("{}{}: {} / {} of {}", html.empty() ? "" : "<br>", escape_html(name),
                         cell(field(s, "ref_vs_float_ip")), cell(field(s, "ref_vs_float")),
                         cell(field(s, "pixels")));
   return html;
@@ -574,14 +560,14 @@ std::string results_table(const std::vector<const json*>& rows, const std::vecto
     const bool on_front = std::any_of(front.begin(), front.end(),
                                       [&](const Candidate& c) { return c.row == r; });
     html += fmt::format("<tr class=\"{}{}\"><td>{}</td><td>{}</td>", status_class(row),
-                        on_front ? " pareto" : "", escape(row_id(row, r)), cell(field(row, "status")));
+                        on_front ? " pareto" : "", escape_html(row_id(row, r)), cell(field(row, "status")));
     for (std::string_view p : kSweepParameters)
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, p)));
     for (std::string_view m : kMeasurements)
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, m)));
     const std::string error =
         row.is_object() ? (field(row, "error") ? cell(field(row, "error")) : std::string())
-                        : escape("malformed row (not an object): " + row.dump());
+                        : escape_html("malformed row (not an object): " + row.dump());
     html += fmt::format("<td>{}</td><td class=\"error\">{}</td></tr>\n",
                         scenes_cell(field(row, "scenes")), error);
   }
@@ -597,7 +583,7 @@ std::string pareto_table(const std::vector<const json*>& rows, const std::vector
           "pixels</th><th>latency (cycles)</th></tr>\n";
   for (const Candidate& c : front) {
     const json& row = *rows[c.row];
-    html += fmt::format("<tr><td>{}</td>", escape(c.id));
+    html += fmt::format("<tr><td>{}</td>", escape_html(c.id));
     for (std::string_view p : kSweepParameters)
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, p)));
     for (std::string_view m : {"lut", "ref_vs_float_total", "ref_vs_float_ip_total", "rtl_latency_cycles"})
@@ -637,7 +623,7 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
       "<title>rpu sweep: {0}</title>\n<style>{1}</style>\n</head>\n<body>\n"
       "<h1>rpu sweep: {0}</h1>\n<p>{2} configurations: {3}. The results as "
       "<a href=\"results.csv\">results.csv</a> and <a href=\"results.json\">results.json</a>.</p>\n",
-      escape(title), kStyle, rows.size(), escape(counts));
+      escape_html(title), kStyle, rows.size(), escape_html(counts));
 
   html += "<h2>Plots</h2>\n<div class=\"gallery\">\n";
   const std::pair<std::string_view, std::string_view> plots[] = {
@@ -653,7 +639,7 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
   for (const auto& [file, caption] : plots)
     html += fmt::format("<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{0}\"></a>"
                         "<figcaption>{1}</figcaption></figure>\n",
-                        escape(file), escape(caption));
+                        escape_html(file), escape_html(caption));
   html += "</div>\n";
 
   html += "<h2>Pareto front</h2>\n<p>The ok configurations no other dominates: none has at most "
@@ -664,13 +650,6 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
   return html + "</body>\n</html>\n";
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(path.string(), std::string("cannot open for writing: ") + std::strerror(errno));
-  out << text;
-  out.close();
-  if (!out) throw Error(path.string(), "cannot write the file");
-}
 
 }  // namespace
 
@@ -694,7 +673,7 @@ SweepPlots write_sweep_report(const nlohmann::json& rows, const std::string& out
   for (const Candidate& c : front) plots.pareto_ids.push_back(c.id);
   const auto write = [&](std::string_view name, const std::string& text) {
     const fs::path path = dir / name;
-    write_text(path, text);
+    write_text_file(path, text);
     plots.files.push_back(path.string());
   };
   write(kAccuracyVsLutsSvg, svg_figure(accuracy_vs_luts(list, front, title)));

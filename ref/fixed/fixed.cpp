@@ -64,3 +64,19 @@ u128 udiv(u128 dividend, u128 divisor, int quotient_width) {
 }
 
 }  // namespace rpu::fixed
+
+namespace rpu::fixed {
+
+std::string to_decimal(i128 v) {
+  if (v == 0) return "0";
+  const bool neg = v < 0;
+  u128 u = neg ? static_cast<u128>(-(v + 1)) + 1 : static_cast<u128>(v);
+  std::string s;
+  while (u) {
+    s.insert(s.begin(), static_cast<char>('0' + static_cast<int>(u % 10)));
+    u /= 10;
+  }
+  return neg ? "-" + s : s;
+}
+
+}  // namespace rpu::fixed

@@ -89,4 +89,7 @@ u128 isqrt_digits(u128 x, int width);
 // true quotient must fit in quotient_width bits (callers guarantee it by format; checked).
 u128 udiv(u128 dividend, u128 divisor, int quotient_width);
 
+// Decimal text of a 128-bit integer (reports and test failures; the standard library has none).
+std::string to_decimal(i128 v);
+
 }  // namespace rpu::fixed

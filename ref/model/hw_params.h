@@ -23,6 +23,8 @@ struct HwParams {
   bool unrolled = true;  // K step units in a pipeline (one pair per cycle), or one step unit
                          // reused K times (iterative); the results are identical
 
+  bool operator==(const HwParams&) const = default;  // the same hardware (every parameter)
+
   int K() const { return n / n1; }
   int J() const { return 1 << n1; }
 

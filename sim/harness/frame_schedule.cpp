@@ -12,7 +12,7 @@ namespace rpu::sim {
 
 namespace {
 
-std::string dec(i128 v) { return to_decimal(v); }
+std::string dec(i128 v) { return fixed::to_decimal(v); }
 std::string vec(const ref::WVec3& v) {
   return "(" + dec(v.x) + ", " + dec(v.y) + ", " + dec(v.z) + ")";
 }

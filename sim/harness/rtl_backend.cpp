@@ -63,7 +63,7 @@ StreamRecord run_external(const std::string& exe, const FrameSchedule& f, const 
 }
 
 StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::string* config) {
-  if (!same_hardware(f.params, systemc_params()) || o.fault)
+  if (f.params != systemc_params() || o.fault)
     throw Error("--systemc", "the SystemC model is built for " + describe(systemc_params()) +
                              " only (add --ip iterative at the default widths)");
   const std::string exe = o.sc_exe.empty() ? (self_dir() / "rpu_sc").string() : o.sc_exe;
@@ -91,7 +91,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
   RtlRender out;
   const RtlConfig* cfg = nullptr;
   for (const RtlConfig& c : rtl_configs())
-    if (c.fault == o.fault && same_hardware(c.params, m.params)) cfg = &c;
+    if (c.fault == o.fault && c.params == m.params) cfg = &c;
   if (o.systemc || !o.external_exe.empty()) {
     out.harness = o.systemc ? "systemc" : "c++ (external)";
     StreamRecord r;

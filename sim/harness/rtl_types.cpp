@@ -4,29 +4,10 @@
 
 namespace rpu::sim {
 
-std::string to_decimal(i128 v) {
-  if (v == 0) return "0";
-  const bool neg = v < 0;
-  u128 u = neg ? static_cast<u128>(-(v + 1)) + 1 : static_cast<u128>(v);
-  std::string s;
-  while (u) {
-    s.insert(s.begin(), static_cast<char>('0' + static_cast<int>(u % 10)));
-    u /= 10;
-  }
-  return neg ? "-" + s : s;
-}
-
 ref::HwParams systemc_params() {
   ref::HwParams p;
   p.unrolled = false;
   return p;
-}
-
-bool same_hardware(const ref::HwParams& a, const ref::HwParams& b) {
-  return a.n == b.n && a.n1 == b.n1 && a.coord_w == b.coord_w && a.dir_frac == b.dir_frac &&
-         a.t_frac == b.t_frac && a.unit_frac == b.unit_frac && a.edge_frac == b.edge_frac &&
-         a.inv_w == b.inv_w && a.sqrt_w == b.sqrt_w && a.metric == b.metric &&
-         a.unrolled == b.unrolled;
 }
 
 TopWidths::TopWidths(const ref::HwParams& p)
@@ -87,8 +68,8 @@ std::string ItemResult::describe() const {
   return fmt::format("id {} pixel ({},{}) seg {} last {} {} prim {} pred1 {} hit {} depth {} "
                      "tau {} t {} X ({}, {}, {}) ovf {}",
                      id, i, j, seg, last ? 1 : 0, texture ? "texture" : "curve", primitive,
-                     pred1 ? 1 : 0, hit ? 1 : 0, to_decimal(depth), tau, to_decimal(t), to_decimal(X[0]), to_decimal(X[1]),
-                     to_decimal(X[2]), overflow ? 1 : 0);
+                     pred1 ? 1 : 0, hit ? 1 : 0, fixed::to_decimal(depth), tau, fixed::to_decimal(t), fixed::to_decimal(X[0]), fixed::to_decimal(X[1]),
+                     fixed::to_decimal(X[2]), overflow ? 1 : 0);
 }
 
 }  // namespace rpu::sim

@@ -27,15 +27,9 @@ struct TopWidths {
   explicit TopWidths(const ref::HwParams& p);
 };
 
-// The Verilog parameters of two configurations are equal (every field of HwParams).
-bool same_hardware(const ref::HwParams& a, const ref::HwParams& b);
-
 // The parameters of the SystemC build (sim/systemc/CMakeLists.txt passes -GUnrolled=0): the
 // default widths and n, n1 in the iterative form.
 ref::HwParams systemc_params();
-
-// Decimal text of a 128-bit integer (for reports).
-std::string to_decimal(i128 v);
 
 // A little-endian bit vector: bit k is bit k%32 of word k/32.
 class Bits {

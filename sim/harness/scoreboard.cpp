@@ -5,7 +5,7 @@
 namespace rpu::sim {
 
 namespace {
-std::string dec(i128 v) { return to_decimal(v); }
+std::string dec(i128 v) { return fixed::to_decimal(v); }
 }  // namespace
 
 Scoreboard::Scoreboard(const FrameSchedule& f, const ref::ModelScene& m, int max_reports)

@@ -327,7 +327,7 @@ int sc_main(int argc, char** argv) {
   try {
     const sim::FrameSchedule f = sim::read_job(argv[1]);
     const sim::TopWidths widths(f.params);
-    if (!sim::same_hardware(f.params, sim::systemc_params())) {
+    if (f.params != sim::systemc_params()) {
       std::fprintf(stderr, "rpu_sc: error: this SystemC model is built at the default widths, "
                            "n 16, n1 2, iterative (--ip iterative); the job asks for others\n");
       return 1;

@@ -32,17 +32,7 @@ inline long vector_count(long fallback) {
   return env ? std::strtol(env, nullptr, 0) : fallback;
 }
 
-inline std::string to_string(i128 v) {
-  if (v == 0) return "0";
-  const bool neg = v < 0;
-  u128 u = neg ? static_cast<u128>(-(v + 1)) + 1 : static_cast<u128>(v);
-  std::string s;
-  while (u) {
-    s.insert(s.begin(), static_cast<char>('0' + static_cast<int>(u % 10)));
-    u /= 10;
-  }
-  return neg ? "-" + s : s;
-}
+inline std::string to_string(i128 v) { return fixed::to_decimal(v); }
 
 // Writing a `width`-bit two's-complement value into a Verilator port of any size.
 inline void put(CData& port, i128 v, int) { port = static_cast<CData>(v); }
