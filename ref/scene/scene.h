@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/limits.h"
 #include "common/vec3.h"
 
 namespace rpu::scene {
@@ -46,8 +47,9 @@ struct Scene {
   std::vector<Texture> textures;
 };
 
-// Largest accepted image side and pixel count: bigger requests are refused, not attempted.
-inline constexpr int kMaxImageSide = 16384;
-inline constexpr long long kMaxImagePixels = 1LL << 26;
+// Largest accepted image side and pixel count: bigger requests are refused, not attempted
+// (common/limits.h holds every limit).
+inline constexpr int kMaxImageSide = limits::kMaxImageSide;
+inline constexpr long long kMaxImagePixels = limits::kMaxImagePixels;
 
 }  // namespace rpu::scene
