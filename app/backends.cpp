@@ -47,6 +47,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     r.pairs = stats.pairs_tested + stats.texture_pairs_tested;
   } else if (backend == "ref") {
     const ref::ModelScene model = ref::quantize_scene(sc, o.hw);
+    r.precision_warning = model.precision.warning;
     ref::RefStats stats;
     r.render.frame = ref::render_ref(sc, model, o.ref, &stats);
     r.pairs = stats.curve_pairs + stats.texture_pairs;
@@ -54,6 +55,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
   } else if (backend == "rtl") {
 #if RPU_HAVE_RTL
     const ref::ModelScene model = ref::quantize_scene(sc, o.hw);
+    r.precision_warning = model.precision.warning;
     sim::RtlOptions ro;
     ro.ref = o.ref;
     ro.systemc = o.systemc;

@@ -34,6 +34,7 @@ struct BackendResult {
   std::vector<std::string> reports;        // rtl only: mismatch records
   bool rtl_ok = true;                      // rtl only: equal to the model on every item and pixel
   std::string trace_log;                   // rtl only: what --trace-pixel did
+  std::string precision_warning;           // ref, rtl: ref::Precision::warning ("" = none)
 };
 
 inline const std::vector<std::string>& backend_names() {

@@ -1,6 +1,7 @@
 // rpu_sphere: the sphere unit (the model's `sphere_unit`): does the ray h + v̂·t meet the
 // segment's interpolation sphere (c0, R²) in front of the eye, and the search interval [A, B]:
-//   q = c0 − h (exact), tc = floor(v̂·q), disc = R² + tc² − q·q (exact),
+//   q = c0 − h (exact), tc = floor(v̂·q), w = q × v̂ (exact) floored to Guard fraction bits,
+//   disc = R² − floor(|w|²) (the squared ray distance of c0; well conditioned however far the eye),
 //   hc = sqrt_unit(disc) (rpu_sqrt, 2CoordW+5-bit radicand; saturated, flagged when wider),
 //   pred1 = disc >= 0 ∧ tc + hc > 0, t1 = max(0, tc − hc), t2 = tc + hc,
 //   A = sat(h + floor(v̂·t1)), B = sat(h + floor(v̂·t2)) to CoordW bits (flagged), AB = B − A,
@@ -58,10 +59,11 @@ module rpu_sphere #(
   localparam integer FV    = DirFrac;
   localparam integer PvW   = DirW + DiffW;   // v̂_k·q_k, exact
   localparam integer VqW   = FV + CW + 4;    // v̂·q: |.| < 3·2^(FV+CW+1)
-  localparam integer QqW   = 2 * CW + 2;     // q·q < 3·2^(2CW), unsigned
-  localparam integer Tc2W  = 2 * CW + 6;     // tc² <= 36·2^(2CW), unsigned
-  localparam integer RqW   = 2 * CW + 3;     // R² − q·q, signed
-  localparam integer DiscW = 2 * CW + 7;     // disc in (−3·2^(2CW), 38·2^(2CW)), signed
+  localparam integer Guard = 2;             // HwParams::kSphereGuard
+  localparam integer WtW   = PvW + 1 - (FV - Guard);  // q × v̂ floored to Q(.Guard) LSB, signed
+  localparam integer WsqW  = 2 * WtW - 1;    // wt_k², unsigned
+  localparam integer PsW   = WsqW + 2;       // |wt|², unsigned
+  localparam integer DiscW = PsW - 2 * Guard + 1;  // R² − perp2, signed (R2W < PsW − 2Guard)
   localparam integer RadW  = 2 * CW + 5;     // the model's sphere_radicand_w()
   localparam integer TpW   = CW + 5;         // t1, t2: |.| < 12·2^CW, signed
   localparam integer PtW   = DirW + TpW;     // v̂_k·t, exact
@@ -120,27 +122,35 @@ module rpu_sphere #(
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 2: the products v̂_k·q_k and q_k² (exact).
+  // Stage 2: the products v̂_k·q_k and the cross-product terms q_{k+1}·v̂_{k+2}, q_{k+2}·v̂_{k+1}
+  // (all exact).
   // ---------------------------------------------------------------------------------------------
-  wire [3*PvW-1:0]    pv;
-  wire [3*2*CW-1:0]   pq;
+  wire [3*PvW-1:0] pv;
+  wire [3*PvW-1:0] pca;
+  wire [3*PvW-1:0] pcb;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_pv
-      wire signed [DirW-1:0]    vk = v1_q[k*DirW +: DirW];
-      wire signed [DiffW-1:0]   qk = q1_q[k*DiffW +: DiffW];
-      wire signed [PvW-1:0]     vx = {{DiffW{vk[DirW-1]}}, vk};
-      wire signed [PvW-1:0]     qx = {{DirW{qk[DiffW-1]}}, qk};
-      wire signed [2*DiffW-1:0] qq = {{DiffW{qk[DiffW-1]}}, qk};
-      wire signed [2*DiffW-1:0] sq = qq * qq;
-      assign pv[k*PvW +: PvW] = vx * qx;
-      // |q_k| < 2^CW, so q_k² < 2^(2CW): the two top bits are zero.
-      assign pq[k*2*CW +: 2*CW] = sq[2*CW-1:0];
-      wire unused_sq = ^sq[2*DiffW-1:2*CW];
+      wire signed [DirW-1:0]  vk  = v1_q[k*DirW +: DirW];
+      wire signed [DiffW-1:0] qk  = q1_q[k*DiffW +: DiffW];
+      wire signed [DirW-1:0]  va  = v1_q[((k+2)%3)*DirW +: DirW];
+      wire signed [DiffW-1:0] qa  = q1_q[((k+1)%3)*DiffW +: DiffW];
+      wire signed [DirW-1:0]  vb  = v1_q[((k+1)%3)*DirW +: DirW];
+      wire signed [DiffW-1:0] qb  = q1_q[((k+2)%3)*DiffW +: DiffW];
+      wire signed [PvW-1:0]   vx  = {{DiffW{vk[DirW-1]}}, vk};
+      wire signed [PvW-1:0]   qx  = {{DirW{qk[DiffW-1]}}, qk};
+      wire signed [PvW-1:0]   vax = {{DiffW{va[DirW-1]}}, va};
+      wire signed [PvW-1:0]   qax = {{DirW{qa[DiffW-1]}}, qa};
+      wire signed [PvW-1:0]   vbx = {{DiffW{vb[DirW-1]}}, vb};
+      wire signed [PvW-1:0]   qbx = {{DirW{qb[DiffW-1]}}, qb};
+      assign pv[k*PvW +: PvW]  = vx * qx;
+      assign pca[k*PvW +: PvW] = qax * vax;
+      assign pcb[k*PvW +: PvW] = qbx * vbx;
     end
   endgenerate
 
   reg [3*PvW-1:0]  pv2_q;
-  reg [3*2*CW-1:0] pq2_q;
+  reg [3*PvW-1:0]  pca2_q;
+  reg [3*PvW-1:0]  pcb2_q;
   reg [3*CW-1:0]   h2_q;
   reg [3*DirW-1:0] v2_q;
   reg [R2W-1:0]    r2_2_q;
@@ -149,7 +159,8 @@ module rpu_sphere #(
   reg              valid2_q;
   always @(posedge clk_i) begin
     pv2_q  <= pv;
-    pq2_q  <= pq;
+    pca2_q <= pca;
+    pcb2_q <= pcb;
     h2_q   <= h1_q;
     v2_q   <= v1_q;
     r2_2_q <= r2_1_q;
@@ -158,7 +169,8 @@ module rpu_sphere #(
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 3: tc = floor(v̂·q · 2^-FV), q·q (the sums cannot wrap in VqW / QqW bits).
+  // Stage 3: tc = floor(v̂·q · 2^-FV) (the sum cannot wrap in VqW bits); the cross product
+  // w = q × v̂ (exact), each component floored to Guard fraction bits of an LSB.
   // ---------------------------------------------------------------------------------------------
   wire signed [PvW-1:0] pv_x = pv2_q[0*PvW +: PvW];
   wire signed [PvW-1:0] pv_y = pv2_q[1*PvW +: PvW];
@@ -168,11 +180,19 @@ module rpu_sphere #(
                              {{(VqW-PvW){pv_z[PvW-1]}}, pv_z};
   wire [TcW-1:0] tc = vq[VqW-1:FV];  // arithmetic shift right by FV (floor)
   wire unused_vq = ^vq[FV-1:0];
-  wire [QqW-1:0] qsum = {2'b00, pq2_q[0*2*CW +: 2*CW]} + {2'b00, pq2_q[1*2*CW +: 2*CW]} +
-                        {2'b00, pq2_q[2*2*CW +: 2*CW]};
+  wire [3*WtW-1:0] wt;
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : g_w
+      wire signed [PvW-1:0] a = pca2_q[k*PvW +: PvW];
+      wire signed [PvW-1:0] b = pcb2_q[k*PvW +: PvW];
+      wire signed [PvW:0]   w = {a[PvW-1], a} - {b[PvW-1], b};
+      assign wt[k*WtW +: WtW] = w[PvW:FV-Guard];  // floor(w · 2^-(FV−Guard))
+      wire unused_w = ^w[FV-Guard-1:0];
+    end
+  endgenerate
 
   reg [TcW-1:0]    tc3_q;
-  reg [QqW-1:0]    qq3_q;
+  reg [3*WtW-1:0]  wt3_q;
   reg [3*CW-1:0]   h3_q;
   reg [3*DirW-1:0] v3_q;
   reg [R2W-1:0]    r2_3_q;
@@ -181,7 +201,7 @@ module rpu_sphere #(
   reg              valid3_q;
   always @(posedge clk_i) begin
     tc3_q  <= tc;
-    qq3_q  <= qsum;
+    wt3_q  <= wt;
     h3_q   <= h2_q;
     v3_q   <= v2_q;
     r2_3_q <= r2_2_q;
@@ -190,15 +210,22 @@ module rpu_sphere #(
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 4: tc² and R² − q·q (exact).
+  // Stage 4: the squares wt_k² (exact, non-negative).
   // ---------------------------------------------------------------------------------------------
-  wire signed [2*TcW-1:0] tc_x  = {{TcW{tc3_q[TcW-1]}}, tc3_q};
-  wire signed [2*TcW-1:0] tc_sq = tc_x * tc_x;
-  wire unused_tc_sq = ^tc_sq[2*TcW-1:Tc2W];  // tc² < 2^Tc2W
-  wire signed [RqW-1:0] rq = {{(RqW-R2W){1'b0}}, r2_3_q} - {1'b0, qq3_q};
+  wire [3*WsqW-1:0] wsq;
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : g_wsq
+      wire signed [WtW-1:0]   wk = wt3_q[k*WtW +: WtW];
+      wire signed [2*WtW-1:0] wx = {{WtW{wk[WtW-1]}}, wk};
+      wire signed [2*WtW-1:0] sq = wx * wx;
+      // |wt_k| <= 2^(WtW−1), so wt_k² <= 2^(2WtW−2) < 2^WsqW: the top bit is zero.
+      assign wsq[k*WsqW +: WsqW] = sq[WsqW-1:0];
+      wire unused_sq = sq[2*WtW-1];
+    end
+  endgenerate
 
-  reg [Tc2W-1:0]   tcsq4_q;
-  reg [RqW-1:0]    rq4_q;
+  reg [3*WsqW-1:0] wsq4_q;
+  reg [R2W-1:0]    r2_4_q;
   reg [TcW-1:0]    tc4_q;
   reg [3*CW-1:0]   h4_q;
   reg [3*DirW-1:0] v4_q;
@@ -206,8 +233,8 @@ module rpu_sphere #(
   reg [TagW-1:0]   tag4_q;
   reg              valid4_q;
   always @(posedge clk_i) begin
-    tcsq4_q <= tc_sq[Tc2W-1:0];
-    rq4_q   <= rq;
+    wsq4_q  <= wsq;
+    r2_4_q  <= r2_3_q;
     tc4_q   <= tc3_q;
     h4_q    <= h3_q;
     v4_q    <= v3_q;
@@ -216,12 +243,19 @@ module rpu_sphere #(
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 5: disc = R² + tc² − q·q; the radicand: 0 when disc < 0 (no root taken: hc = 0 as in
-  // the model), saturated to RadW bits and flagged when wider (fixed::saturate_unsigned).
+  // Stage 5: perp2 = floor(|wt|² · 2^-2Guard) (the squared distance of c0 from the ray, LSB²),
+  // disc = R² − perp2; the radicand: 0 when disc < 0 (no root taken: hc = 0 as in the model),
+  // saturated to RadW bits and flagged when wider (fixed::saturate_unsigned; disc <= R² never
+  // is, but the flag mirrors the model's rule rather than relying on that bound).
   // ---------------------------------------------------------------------------------------------
-  wire signed [DiscW-1:0] disc = {{(DiscW-RqW){rq4_q[RqW-1]}}, rq4_q} + {1'b0, tcsq4_q};
+  wire [PsW-1:0] wsum = {2'b00, wsq4_q[0*WsqW +: WsqW]} + {2'b00, wsq4_q[1*WsqW +: WsqW]} +
+                        {2'b00, wsq4_q[2*WsqW +: WsqW]};
+  wire [PsW-2*Guard-1:0] perp2 = wsum[PsW-1:2*Guard];
+  wire unused_wsum = ^wsum[2*Guard-1:0];
+  wire signed [DiscW-1:0] disc = {{(DiscW-R2W){1'b0}}, r2_4_q} -
+                                 {{(DiscW-(PsW-2*Guard)){1'b0}}, perp2};
   wire disc_neg = disc[DiscW-1];
-  wire disc_big = ~disc_neg & disc[DiscW-2];  // disc >= 2^RadW (DiscW − 2 == RadW)
+  wire disc_big = ~disc_neg & (|disc[DiscW-2:RadW]);  // disc >= 2^RadW
   wire [RadW-1:0] rad = disc_neg ? {RadW{1'b0}} : disc_big ? RadMax : disc[RadW-1:0];
 
   reg [RadW-1:0]   rad5_q;

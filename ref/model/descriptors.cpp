@@ -91,6 +91,63 @@ SegmentDesc quantize_segment(const scene::CompiledSegment& cs, const Normalizati
   return s;
 }
 
+// Bits to add to a width so that `have` LSBs per pixel reach Precision::kHold.
+int bits_to_hold(double have) {
+  return have >= Precision::kHold ? 0
+                                  : static_cast<int>(std::ceil(std::log2(Precision::kHold / have)));
+}
+
+Precision precision_of(const scene::CompiledScene& sc, const Normalization& norm,
+                       const HwParams& p) {
+  Precision pr;
+  const double sigma = sc.camera.sigma;
+  pr.direction_lsb_per_pixel = std::ldexp(sigma, p.dir_frac);
+  // The nearest interpolation sphere (texture: its region) in front of or around the eye. A
+  // sphere holding the eye has geometry arbitrarily near it, as any perspective view may; the
+  // position criterion is about cameras far from the scene, so those spheres do not count.
+  double nearest = std::numeric_limits<double>::infinity();
+  const auto consider = [&](const Vec3& c0, double R) {
+    const double d = length(c0 - sc.camera.eye) - R;
+    if (d > 0.0) nearest = std::min(nearest, d);
+  };
+  for (const auto& s : sc.curve_segments) consider(s.geom.c0, s.geom.R);
+  for (const auto& s : sc.texture_segments) consider(s.geom.c0, s.geom.R + s.half_width);
+  if (std::isfinite(nearest)) pr.position_lsb_per_pixel = sigma * nearest * norm.scale;
+  const bool pos_low = pr.position_lsb_per_pixel > 0 && pr.position_lsb_per_pixel < Precision::kHold;
+  const bool dir_low = pr.direction_lsb_per_pixel < Precision::kHold;
+  if (pos_low) pr.coord_w_needed = p.coord_w + bits_to_hold(pr.position_lsb_per_pixel);
+  if (dir_low) pr.dir_frac_needed = p.dir_frac + bits_to_hold(pr.direction_lsb_per_pixel);
+  if (!pos_low && !dir_low) return pr;
+  std::string what, raise;
+  if (pos_low) {
+    what = fmt::format("{:.0f} position LSBs (coord_w = {}) at the nearest segment",
+                       pr.position_lsb_per_pixel, p.coord_w);
+    raise = fmt::format("--coord-w {}", pr.coord_w_needed);
+  }
+  if (dir_low) {
+    what += fmt::format("{}{:.0f} direction LSBs (dir_frac = {})", what.empty() ? "" : " and ",
+                        pr.direction_lsb_per_pixel, p.dir_frac);
+    raise += fmt::format("{}--dir-frac {}", raise.empty() ? "" : " and ", pr.dir_frac_needed);
+  }
+  const double worst = std::min(pos_low ? pr.position_lsb_per_pixel : Precision::kHold,
+                                dir_low ? pr.direction_lsb_per_pixel : Precision::kHold);
+  const bool can_raise = (!pos_low || pr.coord_w_needed <= HwParams::kMaxCoordW) &&
+                         (!dir_low || pr.dir_frac_needed <= HwParams::kMaxDirFrac);
+  const std::string fix =
+      can_raise ? "raise " + raise
+                : "move the camera nearer the scene, narrow the image or widen the field of view "
+                  "(the widths needed, " + raise + ", exceed their limits)";
+  if (worst < Precision::kRefuse)
+    throw Error(sc.source + ": camera",
+                fmt::format("a pixel spans only {}, below the {:.0f} the fixed-point model needs "
+                            "to resolve a pixel (the camera is far from the scene or the pixels "
+                            "are tiny); {}", what, Precision::kRefuse, fix));
+  pr.warning = fmt::format("{}: a pixel spans only {}; below {:.0f} the model may differ from "
+                           "float-ip on more than 0.1 % of hit pixels; {}", sc.source, what,
+                           Precision::kHold, fix);
+  return pr;
+}
+
 }  // namespace
 
 IVec3 Normalization::position(const Vec3& p) const {
@@ -128,9 +185,17 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
   c.v0 = quantize_vec(v0, fv, "camera");
   c.dx = quantize_vec(cam.U * s, fv, "camera");
   c.dy = quantize_vec(cam.V * -s, fv, "camera");
-  c.el0 = quantize_vec(cam.U + cam.W * cam.half, fe, "camera");
-  c.et0 = quantize_vec(cam.W * (0.5 * cam.height * s) - cam.V, fe, "camera");
-  c.sw = quantize_vec(cam.W * s, fe, "camera");
+  // Edge vectors E_left(i) = U − x_i·W and E_top(j) = y_j·W − V with x_i = (2i − width)·σ/2,
+  // y_j = (height − 2j)·σ/2, all from one rounded half-pixel step swh = W·σ/2: the hardware's
+  // el0 − i·sw is then exactly U − (2i − width)·swh, so an edge whose x_i is representable (the
+  // centre edges always) is exactly the spec's plane, and a point on it is captured by the pixel
+  // to its right / below (left and top edges inclusive). Rounding el0 and sw separately left a
+  // residual W term that moved such points one column or row over (issue 11, item 10).
+  const IVec3 swh = quantize_vec(cam.W * (0.5 * s), fe, "camera");
+  const IVec3 u = quantize_vec(cam.U, fe, "camera"), vq = quantize_vec(cam.V, fe, "camera");
+  c.el0 = {u.x + cam.width * swh.x, u.y + cam.width * swh.y, u.z + cam.width * swh.z};
+  c.et0 = {cam.height * swh.x - vq.x, cam.height * swh.y - vq.y, cam.height * swh.z - vq.z};
+  c.sw = {2 * swh.x, 2 * swh.y, 2 * swh.z};
   c.w = quantize_vec(cam.W, fe, "camera");
   // Every pixel direction and edge vector must fit Q(4.F): check the image corners.
   const auto at = [](const IVec3& o, const IVec3& a, i64 ka, const IVec3& b2, i64 kb) {
@@ -155,6 +220,8 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
     m.curve_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
   for (const auto& cs : sc.texture_segments)
     m.texture_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
+  // After the segments, whose message names the segment that does not fit.
+  m.precision = precision_of(sc, m.norm, p);
   return m;
 }
 

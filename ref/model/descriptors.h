@@ -63,10 +63,30 @@ struct CameraDesc {
   int width = 0, height = 0;
 };
 
+// How finely the quantised scene resolves a pixel (docs/fixed-point.md, "Cameras far from the
+// scene"): the pixel footprint at the nearest segment in position LSBs, and the pixel angle in
+// direction LSBs. The model's positions and ray directions err by a few LSBs, so a pixel must
+// span many of both for the model to decide pixel membership as the float tracer does.
+struct Precision {
+  double position_lsb_per_pixel = 0;   // σ · (distance eye → nearest sphere) · scale; 0 = n/a
+  double direction_lsb_per_pixel = 0;  // σ · 2^dir_frac
+  // Below kHold of either, ref may differ from float-ip on more than the documented 0.1 % of
+  // hit pixels (measured: docs/fixed-point.md); below kRefuse most hits would be wrong, and the
+  // scene is refused.
+  static constexpr double kHold = 4096.0;
+  static constexpr double kRefuse = 64.0;
+  // Widths that would reach kHold (0 when the current width already does).
+  int coord_w_needed = 0;
+  int dir_frac_needed = 0;
+  // "" when both reach kHold; otherwise one line for a warning, naming the widths to raise.
+  std::string warning;
+};
+
 struct ModelScene {
   std::string source;
   HwParams params;
   Normalization norm;
+  Precision precision;
   CameraDesc camera;
   std::vector<SegmentDesc> curve_segments;    // same order as CompiledScene::curve_segments
   std::vector<SegmentDesc> texture_segments;  // same order as CompiledScene::texture_segments
@@ -74,7 +94,8 @@ struct ModelScene {
 
 // Quantises a compiled scene for the given parameters. Throws rpu::Error when the parameters
 // cannot hold the scene (a segment shorter than a few LSBs, a field of view too wide for the
-// direction format), naming the segment or parameter.
+// direction format, a camera so far from the scene or a pixel so small that a pixel spans fewer
+// than Precision::kRefuse LSBs), naming the segment or parameter and the width to raise.
 ModelScene quantize_scene(const scene::CompiledScene& scene, const HwParams& params);
 
 }  // namespace rpu::ref

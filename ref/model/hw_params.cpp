@@ -19,8 +19,8 @@ void HwParams::validate() const {
   check_range("--n", "result bits", n, 1, 40);
   if (n % n1 != 0)
     throw Error("--n", fmt::format("n = {} is not a multiple of n1 = {} (K = n/n1 steps)", n, n1));
-  check_range("--coord-w", "coordinate width", coord_w, 12, 40);
-  check_range("--dir-frac", "direction fraction bits", dir_frac, 8, 40);
+  check_range("--coord-w", "coordinate width", coord_w, 12, kMaxCoordW);
+  check_range("--dir-frac", "direction fraction bits", dir_frac, 8, kMaxDirFrac);
   check_range("--t-frac", "chord-parameter fraction bits", t_frac, 8, 48);
   check_range("--unit-frac", "guide-direction fraction bits", unit_frac, 8, 40);
   check_range("--edge-frac", "edge-vector fraction bits", edge_frac, 8, 40);

@@ -35,6 +35,12 @@ struct HwParams {
   // Guard bits of the ray generator's linear terms (v0 + i·dx + j·dy, el0 - i·σW, ...): image
   // sides are < 2^14, so i·(rounding of dx) stays below one LSB of the output format.
   static constexpr int kRayGuard = 14;
+  // Fraction bits kept of the sphere unit's cross product q × v̂ before it is squared: the
+  // squared ray distance |q × v̂|² is then exact to about 2^(2-G)·R LSB² (docs/fixed-point.md).
+  static constexpr int kSphereGuard = 2;
+  // Upper limits of the widths a user may raise (validate() checks them).
+  static constexpr int kMaxCoordW = 40;
+  static constexpr int kMaxDirFrac = 40;
   int dir_w() const { return 2 + dir_frac; }             // v̂: Q(2.FV)
   int t_w() const { return 3 + t_frac; }                  // t: Q(3.FT)
   int unit_w() const { return 2 + unit_frac; }            // u: Q(2.FU)

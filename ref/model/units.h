@@ -37,7 +37,7 @@ RayGenOut ray_generator(const HwParams& p, const CameraDesc& cam, int i, int j);
 struct SearchInterval {
   bool pred1 = false;  // the ray meets the interpolation sphere in front of the eye
   i128 tc = 0;         // v̂·q, LSB (distance along the ray to the closest approach)
-  i128 half_chord = 0; // sqrt(R² - |q|² + tc²), LSB
+  i128 half_chord = 0; // sqrt(R² - |q × v̂|²), LSB
   WVec3 A, B;          // interval end points, LSB (saturated to coord_w)
   WVec3 AB;            // B - A, LSB
   i128 alpha = 0;      // t(τ = 0) = (A - p1)·d / L², Q(3.FT)
