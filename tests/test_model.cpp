@@ -470,6 +470,27 @@ TEST(RefModel, FarCameraKeepsItsHitsOrIsRefused) {
   EXPECT_LE(image::count_differing_pixels(ref, ip) * 50, ip.hit_pixels());
 }
 
+// Issue 11, item 12: a field of view just under 180° once said "value out of the 64-bit
+// descriptor range" with neither file nor JSON path.
+TEST(Parameters, FieldOfViewNear180IsRefusedNamingIt) {
+  scene::Scene s = far_curve12(5, 32);
+  s.source = "wide.json";
+  for (const double fov : {179.99999999, 170.0, 165.0}) {
+    s.camera.fov_deg = fov;
+    const scene::CompiledScene sc = scene::compile_scene(s);
+    try {
+      (void)quantize_scene(sc, HwParams{});
+      ADD_FAILURE() << "fov " << fov << " accepted";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("wide.json: camera.fov_deg: field of view too wide", 0), 0u) << what;
+    }
+  }
+  s.camera.fov_deg = 150;  // tan(75°) = 3.7: within the direction format
+  const scene::CompiledScene ok = scene::compile_scene(s);
+  EXPECT_NO_THROW((void)quantize_scene(ok, HwParams{}));
+}
+
 // Issue 11, item 10: a curve exactly on a pixel edge belongs to the pixel right of / below it
 // (ALGORITHM.md 1.1: left and top edges inclusive). The centre edges of the image are exact in
 // the model (the edge vectors are built from one rounded half-pixel step), so ref puts the curve

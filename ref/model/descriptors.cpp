@@ -175,6 +175,15 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
   m.norm.scale = reach > 0.0 ? kRangeUse * std::ldexp(1.0, p.coord_w - 1) / reach : 1.0;
 
   const scene::CameraFrame& cam = sc.camera;
+  // A field of view near 180° makes the pixel directions huge: refuse it here, in the words of
+  // check_dir below, before any of them is rounded into the 64-bit descriptor format.
+  const double reach_x = cam.half, reach_y = cam.half * cam.height / cam.width;
+  const double dir_limit = 1 << (HwParams::kDirInt - 1);
+  if (!(reach_x < dir_limit && reach_y < dir_limit))
+    throw Error(sc.source + ": camera.fov_deg",
+                fmt::format("field of view too wide for the ray generator's direction format (a "
+                            "pixel direction component reaches {:.3g}; limit {})",
+                            std::max(reach_x, reach_y), dir_limit));
   CameraDesc& c = m.camera;
   c.width = cam.width;
   c.height = cam.height;
