@@ -26,9 +26,11 @@ nlohmann::json config_json(const BackendOptions& o) {
 int run_compare(const std::string& scene_arg, const scene::Scene& scene,
                 const CompareOptions& o, nlohmann::json* metrics_out) {
   namespace fs = std::filesystem;
+  check_compare_output(o.out_dir, o.input_file);  // before the work, not only after it
   const scene::CompiledScene sc = scene::compile_scene(scene);
   CompareInput in;
   in.scene = scene_arg;
+  in.input_file = o.input_file;
   for (const auto& p : sc.primitives) in.colors.push_back(p.color);
   in.background = sc.background;
   in.config = config_json(o.backends);
@@ -50,7 +52,8 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   }
   const CompareSummary s = write_compare_report(in, o.out_dir);
   if (metrics_out) *metrics_out = s.metrics;
-  const bool pass = rtl_ran && rtl_ok && s.rtl_equals_ref;
+  const bool rtl_differs = rtl_ran && !(rtl_ok && s.rtl_equals_ref);
+  if (!s.warning.empty()) std::cerr << fmt::format("rpu: warning: {}: {}\n", scene_arg, s.warning);
   if (!o.quiet) {
     std::cerr << fmt::format("{}: {}x{}, rtl vs ref {} px, ref vs float-ip {} px, ref vs float "
                              "{} px, float-ip vs float {} px\n",
@@ -60,10 +63,11 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
                              s.metrics["ref_vs_float_mismatched_pixels"].dump(),
                              s.metrics["float_ip_vs_float_mismatched_pixels"].dump());
     for (const auto& line : in.mismatch_lines) std::cerr << line << "\n";
-    std::cerr << fmt::format("{}: report {}\n", pass ? "PASS" : (rtl_ran ? "FAIL" : "NO RTL"),
+    std::cerr << fmt::format("{}: report {}\n",
+                             !rtl_ran ? "NO RTL (--no-rtl)" : rtl_differs ? "FAIL" : "PASS",
                              (fs::path(o.out_dir) / "report.html").string());
   }
-  return pass ? 0 : 2;
+  return rtl_differs ? 2 : 0;
 }
 
 }  // namespace rpu::app

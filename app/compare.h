@@ -11,13 +11,16 @@ namespace rpu::app {
 
 struct CompareOptions {
   std::string out_dir;
+  std::string input_file;  // the scene file ("" for builtin:NAME); compare never overwrites it
   BackendOptions backends;
   bool skip_rtl = false;   // --no-rtl: the three software backends only
   bool quiet = false;
 };
 
-// Exit status: 0 when the RTL equals the model on every pixel (and every work item), 2 when it
-// does not (or the RTL was not run), errors throw rpu::Error.
+// Exit status: 0 when the RTL equals the model on every pixel (and every work item), or when the
+// RTL was skipped (--no-rtl) and the software backends ran; 2 when the RTL differs from the
+// model; errors throw rpu::Error. A ref vs float-ip difference beyond kRefVsFloatIpBound prints
+// "rpu: warning: <scene>: ..." on stderr (even when quiet) and leaves the status unchanged.
 int run_compare(const std::string& scene_arg, const scene::Scene& scene,
                 const CompareOptions& o, nlohmann::json* metrics_out = nullptr);
 

@@ -11,10 +11,17 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
+
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "image/image_io.h"
+#include "image/output_file.h"
 #include "report_text.h"
 
 namespace rpu::app {
@@ -126,9 +133,16 @@ struct WrittenImage {
   int shown_width = 0, shown_height = 0;
 };
 
+// 8-bit PNG (OpenImageIO converts round(255·v) of v clamped to [0, 1]), every write checked
+// (image::write_image_file).
 void write_png(const ImageBuf& buf, const fs::path& path) {
-  if (!buf.write(path.string(), TypeDesc::UINT8))
-    throw Error(path.string(), "cannot write image: " + buf.geterror());
+  const ImageSpec& spec = buf.spec();
+  std::vector<float> values(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!buf.get_pixels(ROI::All(), TypeDesc::FLOAT, values.data()))
+    throw Error(path.string(), "cannot read back the image to write: " + buf.geterror());
+  image::write_image_file(path.string(),
+                          ImageSpec(spec.width, spec.height, spec.nchannels, TypeDesc::UINT8),
+                          TypeDesc::FLOAT, values.data());
 }
 
 WrittenImage write_image(const ImageBuf& buf, const fs::path& dir, const std::string& stem) {
@@ -313,6 +327,7 @@ constexpr std::string_view kStyle = R"(
 body { font-family: system-ui, sans-serif; margin: 1.5em; color: #222; }
 .banner { font-size: 1.6em; font-weight: bold; padding: .5em 1em; border-radius: 6px; color: #fff; }
 .pass { background: #1a7f37; } .fail { background: #c62828; } .skip { background: #6e6e6e; }
+.warn { background: #b26a00; font-size: 1.1em; margin-top: .4em; }
 .gallery { display: flex; flex-wrap: wrap; gap: 1.2em; align-items: flex-start; }
 figure { margin: 0; max-width: 100%; }
 figure img { display: block; max-width: 100%; height: auto; border: 1px solid #bbb; }
@@ -352,6 +367,13 @@ std::string banner(const CompareInput& in, const nlohmann::json& metrics) {
                      differ, pixels);
 }
 
+// The ref vs float-ip banner: shown when the difference exceeds the documented bound.
+std::string bound_banner(const nlohmann::json& metrics) {
+  const std::string warning = ref_vs_float_ip_warning(metrics);
+  if (warning.empty()) return "";
+  return "<div class=\"banner warn\">WARNING: " + escape_html(warning) + "</div>\n";
+}
+
 std::string report_html(const ReportParts& r) {
   const CompareInput& in = r.in;
   const nlohmann::json& m = r.metrics;
@@ -361,6 +383,7 @@ std::string report_html(const ReportParts& r) {
       "<h1>rpu compare: {0}</h1>\n<p>{2}×{3} = {4} pixels.</p>\n",
       escape_html(in.scene), kStyle, m["width"].get<int>(), m["height"].get<int>(), m["pixels"].get<size_t>());
   html += banner(in, m);
+  html += bound_banner(m);
 
   html += "<h2>Renders</h2>\n<div class=\"gallery\">\n";
   for (size_t k = 0; k < in.renders.size(); ++k) {
@@ -403,7 +426,8 @@ std::string report_html(const ReportParts& r) {
   html += "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>value</th></tr>\n";
   for (const char* key : {"pixels", "rtl_vs_ref_mismatched_pixels", "ref_vs_float_ip_mismatched_pixels",
                           "ref_vs_float_mismatched_pixels", "float_ip_vs_float_mismatched_pixels",
-                          "cycles", "pairs", "latency_cycles", "rtl_equals_ref"})
+                          "ref_vs_float_ip_beyond_bound", "cycles", "pairs", "latency_cycles",
+                          "rtl_equals_ref"})
     html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", key, cell(m[key]));
   html += "</table>\n<table>\n<tr><th>backend</th><th>hit pixels</th><th>seconds</th></tr>\n";
   for (const BackendRender& b : in.renders)
@@ -435,16 +459,8 @@ std::string report_html(const ReportParts& r) {
 }
 
 
-}  // namespace
-
-CompareSummary write_compare_report(const CompareInput& in, const std::string& out_dir) {
-  check_input(in);
-  const fs::path dir = out_dir.empty() ? fs::path(".") : fs::path(out_dir);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Error(dir.string(), "cannot create the output directory: " + ec.message());
-  if (!fs::is_directory(dir)) throw Error(dir.string(), "exists and is not a directory");
-
+// Writes every file of the report into `dir` (an existing, empty staging directory).
+CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
   const image::Frame& first = in.renders.front().frame;
   const auto find = [&](std::string_view name) -> const BackendRender* {
     for (const auto& r : in.renders)
@@ -499,6 +515,22 @@ CompareSummary write_compare_report(const CompareInput& in, const std::string& o
   const bool rtl_equals_ref = checked_rtl && metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>() == 0;
   metrics["rtl_equals_ref"] = checked_rtl ? nlohmann::json(rtl_equals_ref) : nlohmann::json();
 
+  // ref vs float-ip against the documented bound (README; docs/fixed-point.md).
+  if (const BackendRender* ref = find("ref"), *ip = find("float-ip"); ref && ip) {
+    const size_t hits = std::max(ref->frame.hit_pixels(), ip->frame.hit_pixels());
+    const size_t differ = metrics["ref_vs_float_ip_mismatched_pixels"].get<size_t>();
+    metrics["ref_vs_float_ip_hit_pixels"] = hits;
+    metrics["ref_vs_float_ip_fraction"] =
+        hits == 0 ? 0.0 : static_cast<double>(differ) / static_cast<double>(hits);
+    metrics["ref_vs_float_ip_beyond_bound"] =
+        static_cast<double>(differ) > kRefVsFloatIpBound * static_cast<double>(hits);
+  } else {
+    metrics["ref_vs_float_ip_hit_pixels"] = nullptr;
+    metrics["ref_vs_float_ip_fraction"] = nullptr;
+    metrics["ref_vs_float_ip_beyond_bound"] = nullptr;
+  }
+  metrics["ref_vs_float_ip_bound"] = kRefVsFloatIpBound;
+
   const HeatMap heat = heat_map(pairs, first.width, first.height, dir);
   nlohmann::json compared = nlohmann::json::array();
   for (const PairResult& p : pairs) compared.push_back(p.key);
@@ -507,9 +539,152 @@ CompareSummary write_compare_report(const CompareInput& in, const std::string& o
                         {"pairs_compared", compared},
                         {"pixels_by_disagreeing_pairs", heat.histogram}};
 
-  write_text_file(dir / "metrics.json", metrics.dump(2) + "\n");
+  // Scene names and mismatch records may hold any bytes: invalid UTF-8 is replaced, not fatal.
+  write_text_file(dir / "metrics.json",
+                  metrics.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   write_text_file(dir / "report.html", report_html({in, metrics, render_images, pairs, heat}));
-  return {metrics, rtl_equals_ref};
+  return {metrics, rtl_equals_ref, ref_vs_float_ip_warning(metrics)};
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The output directory
+
+namespace {
+
+// The file stems compare writes: every backend of kComparedPairs and of `renders`, every
+// diff_<a>_vs_<b>, the heat map.
+std::set<std::string> owned_stems(const std::vector<BackendRender>& renders) {
+  std::set<std::string> stems = {"heatmap"};
+  for (const auto& [a, b] : kComparedPairs) {
+    stems.insert(std::string(a));
+    stems.insert(std::string(b));
+    stems.insert(fmt::format("diff_{}_vs_{}", a, b));
+  }
+  for (const BackendRender& r : renders) stems.insert(r.name);
+  return stems;
+}
+
+// True for the names compare owns in its directory: metrics.json, report.html, and <stem>.png
+// or <stem>_x<k>.png for an owned stem.
+bool owned_file(const std::string& name, const std::set<std::string>& stems) {
+  if (name == "metrics.json" || name == "report.html") return true;
+  if (!name.ends_with(".png")) return false;
+  std::string stem = name.substr(0, name.size() - 4);
+  if (stems.count(stem)) return true;
+  const size_t x = stem.rfind("_x");
+  if (x == std::string::npos || x + 2 == stem.size()) return false;
+  for (size_t k = x + 2; k < stem.size(); ++k)
+    if (!std::isdigit(static_cast<unsigned char>(stem[k]))) return false;
+  return stems.count(stem.substr(0, x)) > 0;
+}
+
+bool is_directory_entry(const fs::path& p) {
+  struct stat st {};
+  return ::lstat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+// The staging directories of compare runs that no longer exist (killed before cleaning up).
+constexpr std::string_view kStagingPrefix = ".rpu-compare-staging-";
+
+void remove_abandoned_staging(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (!name.starts_with(kStagingPrefix)) continue;
+    const std::string pid_text = name.substr(kStagingPrefix.size(), name.find('_') - kStagingPrefix.size());
+    char* end = nullptr;
+    const long pid = std::strtol(pid_text.c_str(), &end, 10);
+    if (pid <= 0 || *end != '\0') continue;
+    if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH &&
+        is_directory_entry(e.path()))
+      fs::remove_all(e.path(), ec);
+  }
+}
+
+}  // namespace
+
+void check_compare_output(const std::string& out_dir, const std::string& input_file) {
+  if (out_dir.empty())
+    throw Error("--out", "the output directory is empty; name a directory (e.g. --out out/cmp)");
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw Error(out_dir, "exists and is not a directory");
+  if (input_file.empty() || !fs::is_directory(dir, ec)) return;
+  const std::set<std::string> stems = owned_stems({});
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (owned_file(name, stems) && same_file(e.path().string(), input_file))
+      throw Error(e.path().string(), "is the scene file being compared; rpu compare would "
+                                     "overwrite it (choose another --out)");
+  }
+}
+
+std::string ref_vs_float_ip_warning(const nlohmann::json& metrics) {
+  const nlohmann::json beyond = metrics.value("ref_vs_float_ip_beyond_bound", nlohmann::json());
+  if (!beyond.is_boolean() || !beyond.get<bool>()) return "";
+  const auto differ = metrics["ref_vs_float_ip_mismatched_pixels"].get<size_t>();
+  const auto hits = metrics["ref_vs_float_ip_hit_pixels"].get<size_t>();
+  return fmt::format("ref differs from float-ip on {} of {} hit pixels ({:.2f} %), beyond the "
+                     "documented bound of {:g} %",
+                     differ, hits, 100.0 * static_cast<double>(differ) / static_cast<double>(hits),
+                     100.0 * kRefVsFloatIpBound);
+}
+
+CompareSummary write_compare_report(const CompareInput& in, const std::string& out_dir) {
+  check_input(in);
+  check_compare_output(out_dir, in.input_file);
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error(dir.string(), "cannot create the output directory: " + ec.message());
+  if (!fs::is_directory(dir)) throw Error(dir.string(), "exists and is not a directory");
+  remove_abandoned_staging(dir);
+
+  // Everything is written into a staging directory inside `dir` first and moved into place only
+  // when every file was written, so a failure leaves the previous outputs and no partial ones.
+  static std::atomic<unsigned> runs{0};
+  const fs::path staging =
+      dir / fmt::format("{}{}_{}", kStagingPrefix, ::getpid(), runs.fetch_add(1));
+  fs::remove_all(staging, ec);
+  if (!fs::create_directory(staging, ec) || ec)
+    throw Error(dir.string(), "cannot create a staging directory in the output directory: " +
+                                  (ec ? ec.message() : std::string("it exists")));
+  try {
+    CompareSummary summary = write_report_files(in, staging);
+    // Move into place: images first, the report last.
+    std::vector<std::string> written;
+    for (const auto& e : fs::directory_iterator(staging)) written.push_back(e.path().filename().string());
+    std::sort(written.begin(), written.end(), [](const std::string& a, const std::string& b) {
+      const auto rank = [](const std::string& n) { return n == "report.html" ? 2 : n == "metrics.json" ? 1 : 0; };
+      return std::pair(rank(a), a) < std::pair(rank(b), b);
+    });
+    check_compare_output(out_dir, in.input_file);
+    for (const std::string& name : written)
+      commit_temporary((staging / name).string(), (dir / name).string());
+    // Outputs of an earlier run that this one did not write (e.g. rtl*.png after --no-rtl).
+    const std::set<std::string> stems = owned_stems(in.renders);
+    const std::set<std::string> now(written.begin(), written.end());
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (owned_file(name, stems) && !now.count(name) && !is_directory_entry(e.path()))
+        fs::remove(e.path(), ec);
+    }
+    fs::remove_all(staging, ec);
+    return summary;
+  } catch (const Error& e) {
+    fs::remove_all(staging, ec);
+    // Name the output the user asked for, not its place in the staging directory.
+    std::string where = e.where();
+    if (const std::string prefix = staging.string(); where.starts_with(prefix))
+      where = (dir / fs::path(where.substr(prefix.size() + 1))).string();
+    throw Error(where, e.problem());
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
 }
 
 }  // namespace rpu::app

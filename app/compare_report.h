@@ -25,6 +25,7 @@ struct BackendRender {
 // Everything the report shows.
 struct CompareInput {
   std::string scene;                   // scene argument as given (file or builtin:NAME)
+  std::string input_file;              // the scene file ("" for builtin:NAME): never overwritten
   std::vector<scene::Color> colors;    // per primitive id
   scene::Color background;
   std::vector<BackendRender> renders;  // any subset; rtl and ref normally present
@@ -37,7 +38,14 @@ struct CompareInput {
 struct CompareSummary {
   nlohmann::json metrics;  // what metrics.json holds
   bool rtl_equals_ref;     // both rtl and ref rendered and equal on every pixel; false otherwise
+  std::string warning;     // ref_vs_float_ip_warning(metrics): "" within the bound
 };
+
+// The documented agreement of `ref` and `float-ip` (README, docs/fixed-point.md): at the default
+// parameters they differ on at most this fraction (0.1 %) of the hit pixels (the larger of the
+// two hit counts) of every demo scene. Beyond it compare warns (stderr, metrics.json, banner);
+// the exit status is unchanged (2 is reserved for RTL != model).
+inline constexpr double kRefVsFloatIpBound = 0.001;
 
 // The compared pairs, in report order: (a, b) gives diff_<a>_vs_<b>.png and the metrics key
 // <a>_vs_<b>_mismatched_pixels ('-' written '_').
@@ -71,13 +79,29 @@ inline constexpr int kEnlargeBelow = 256;
 // both rendered); backends.<name>.{hit_pixels, seconds, image}; comparisons.<a>_vs_<b>.
 // {mismatched_pixels, hit_only_in_<a>, hit_only_in_<b>, different_primitive, image} (or null);
 // heatmap.{image, color_map, pairs_compared, pixels_by_disagreeing_pairs[d]}; config; rtl;
-// mismatch_records. A pixel mismatches when its primitive id differs
+// mismatch_records; ref_vs_float_ip_hit_pixels, ref_vs_float_ip_fraction,
+// ref_vs_float_ip_beyond_bound (null unless ref and float-ip both rendered) and
+// ref_vs_float_ip_bound (kRefVsFloatIpBound). A pixel mismatches when its primitive id differs
 // (image::count_differing_pixels).
 //
 // Writes into out_dir (created if missing): <backend>.png for every render; diff_<a>_vs_<b>.png
 // for each of kComparedPairs whose both renders exist; heatmap.png; metrics.json; report.html.
-// Throws rpu::Error naming the path on I/O failure, and naming the backend on inconsistent input
-// (frames of different sizes, unknown primitive ids, repeated or unusable names).
+// Every file is first written into a staging directory inside out_dir and moved into place only
+// when all were written (renames replace symlinks there, never follow them); on failure nothing
+// of this run is left. Files of an earlier run that this one does not write (any name compare
+// owns: metrics.json, report.html, <stem>.png and <stem>_x<k>.png for every backend, diff and the
+// heat map) are removed. Throws rpu::Error naming the path on I/O failure, and naming the backend
+// on inconsistent input (frames of different sizes, unknown primitive ids, repeated or unusable
+// names).
 CompareSummary write_compare_report(const CompareInput& in, const std::string& out_dir);
+
+// Refuses, before any work: an empty out_dir, an out_dir that exists and is not a directory, and
+// an out_dir where a file compare owns is `input_file` (same device and inode, so hard links and
+// symlinks count). Throws rpu::Error naming the path.
+void check_compare_output(const std::string& out_dir, const std::string& input_file);
+
+// "ref differs from float-ip on N of M hit pixels (P %), beyond the documented bound of 0.1 %"
+// when metrics.ref_vs_float_ip_beyond_bound is true; "" otherwise.
+std::string ref_vs_float_ip_warning(const nlohmann::json& metrics);
 
 }  // namespace rpu::app

@@ -15,6 +15,7 @@
 #include "builtin_scenes.h"
 #include "common/error.h"
 #include "image/image_io.h"
+#include "report_text.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"
 
@@ -36,7 +37,15 @@ scene::Scene load_scene_argument(const std::string& argument) {
 
 int run_demo(const DemoOptions& options) {
   namespace fs = std::filesystem;
-  fs::create_directories(options.out_dir);
+  // The same rules as compare --out: not empty, a directory (created if missing).
+  check_compare_output(options.out_dir, "");
+  {
+    std::error_code ec;
+    fs::create_directories(options.out_dir, ec);
+    if (ec || !fs::is_directory(options.out_dir))
+      throw Error(options.out_dir, "cannot create the output directory" +
+                                       (ec ? ": " + ec.message() : std::string()));
+  }
   nlohmann::json summary = nlohmann::json::array();
   const ref::HwParams& hw = options.compare.backends.hw;
   std::string md = fmt::format(
@@ -81,8 +90,9 @@ int run_demo(const DemoOptions& options) {
       std::cerr << fmt::format("{} ({}x{}): {}\n", arg, loaded[k].camera.width,
                                loaded[k].camera.height,
                                !errors[k].empty() ? "error: " + errors[k]
-                               : codes[k] == 0    ? "PASS, rtl == ref"
-                                                  : "FAIL, see " + co.out_dir + "/report.html");
+                               : codes[k] != 0    ? "FAIL, see " + co.out_dir + "/report.html"
+                               : co.skip_rtl      ? std::string("software backends only (--no-rtl)")
+                                                  : std::string("PASS, rtl == ref"));
     }
   };
   {
@@ -125,17 +135,19 @@ int run_demo(const DemoOptions& options) {
                              cell("ref_vs_float_ip_mismatched_pixels"),
                              cell("ref_vs_float_mismatched_pixels"),
                              cell("float_ip_vs_float_mismatched_pixels"), cell("cycles"),
-                             rc == 0 ? "PASS" : "FAIL");
+                             rc != 0 ? "FAIL" : options.compare.skip_rtl ? "not run" : "PASS");
   }
-  std::ofstream(fs::path(options.out_dir) / "summary.json") << summary.dump(2) << "\n";
-  std::ofstream(fs::path(options.out_dir) / "summary.md") << md;
-  std::ofstream(fs::path(options.out_dir) / "index.html")
-      << "<!doctype html><html><head><meta charset=\"utf-8\"><title>rpu demo</title>"
-         "<style>body{font-family:sans-serif}td,th{padding:2px 8px;border-bottom:1px solid #ccc}"
-         "</style></head><body><h1>rpu demo: every built-in scene, every backend</h1>"
-         "<table><tr><th>scene</th><th>size</th><th>rtl vs ref</th><th>ref vs float-ip</th>"
-         "<th>ref vs float</th><th>float-ip vs float</th><th>cycles</th><th>RTL = model</th></tr>\n"
-      << rows_html << "</table></body></html>\n";
+  const fs::path out(options.out_dir);
+  write_text_file(out / "summary.json",
+                  summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  write_text_file(out / "summary.md", md);
+  write_text_file(out / "index.html",
+      "<!doctype html><html><head><meta charset=\"utf-8\"><title>rpu demo</title>"
+      "<style>body{font-family:sans-serif}td,th{padding:2px 8px;border-bottom:1px solid #ccc}"
+      "</style></head><body><h1>rpu demo: every built-in scene, every backend</h1>"
+      "<table><tr><th>scene</th><th>size</th><th>rtl vs ref</th><th>ref vs float-ip</th>"
+      "<th>ref vs float</th><th>float-ip vs float</th><th>cycles</th><th>RTL = model</th></tr>\n" +
+      rows_html + "</table></body></html>\n");
   std::cout << "wrote " << (fs::path(options.out_dir) / "index.html").string() << " and "
             << (fs::path(options.out_dir) / "summary.md").string() << "\n";
   return status;

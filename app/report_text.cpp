@@ -1,10 +1,6 @@
 #include "report_text.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-
-#include "common/error.h"
+#include "image/output_file.h"
 
 namespace rpu::app {
 
@@ -25,21 +21,8 @@ std::string escape_html(std::string_view text) {
 }
 
 void write_text_file(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out)
-      throw Error(path.string(), std::string("cannot open for writing: ") + std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) throw Error(path.string(), "cannot write the file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw Error(path.string(), "cannot write the file: " + ec.message());
-  }
+  check_output_path(path.string(), "file");
+  write_file_atomically(path.string(), text);
 }
 
 }  // namespace rpu::app

@@ -3,18 +3,24 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
+#include <string_view>
 
 #include "backends.h"
 #include "builtin_scenes.h"
 #include "compare.h"
 #include "common/error.h"
+#include "common/limits.h"
 #include "demo.h"
 #include "sweep.h"
 #include "image/image_io.h"
+#include "image/output_file.h"
 #include "model/ref_renderer.h"
 #include "scene/compiled_scene.h"
 #include "tracer/float_tracer.h"
@@ -28,7 +34,7 @@ struct CommonFlags {
   ref::HwParams hw;
   std::string metric = "abs";
   std::string ip_mode = "unrolled";
-  int threads = 0;
+  long long threads = 0;    // checked by validate() before use
   bool no_binning = false;
   bool no_grid = false;
   std::string size;          // WxH: overrides the scene's resolution
@@ -73,29 +79,59 @@ struct CommonFlags {
     app.add_flag("--rtl-fault", rtl_fault,
                  "rtl: use the build with a deliberately injected fault (tests of the checker)");
   }
-  // The scene with the size flags applied.
+  // Refuses out-of-range flags shared by every subcommand (common/limits.h).
+  void validate() const {
+    limits::check_threads("--threads", threads);
+    if (max_side < 0) throw Error("--max-side", "must be at least 1 (0 = off), got " +
+                                                std::to_string(max_side));
+  }
+  // The scene with the size flags applied; the result is held to the same image-size limit as
+  // a scene file's camera.
   scene::Scene load(const std::string& arg) const {
+    validate();
     scene::Scene sc = app::load_scene_argument(arg);
     if (!size.empty()) {
-      int w = 0, h = 0;
-      char x = 0, extra = 0;
-      if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-          w < 1 || h < 1 || w > 16384 || h > 16384)
-        throw Error("--size", "must be WxH with 1 <= W, H <= 16384, got '" + size + "'");
-      sc.camera.width = w;
-      sc.camera.height = h;
+      const auto [w, h] = parse_size(size);
+      limits::check_image_size("--size", w, h);
+      sc.camera.width = static_cast<int>(w);
+      sc.camera.height = static_cast<int>(h);
     }
-    if (max_side < 0) throw Error("--max-side", "must be positive");
     if (max_side > 0) {
-      const int side = std::max(sc.camera.width, sc.camera.height);
+      const long long side = std::max(sc.camera.width, sc.camera.height);
       if (side > max_side) {
-        sc.camera.width = std::max(1, sc.camera.width * max_side / side);
-        sc.camera.height = std::max(1, sc.camera.height * max_side / side);
+        const long long w = std::max(1LL, sc.camera.width * max_side / side);
+        const long long h = std::max(1LL, sc.camera.height * max_side / side);
+        limits::check_image_size("--max-side", w, h);
+        sc.camera.width = static_cast<int>(w);
+        sc.camera.height = static_cast<int>(h);
       }
     }
     return sc;
   }
+  // "WxH" (x or X) as two integers; any other text is refused naming the flag.
+  static std::pair<long long, long long> parse_size(const std::string& text) {
+    const auto bad = [&] {
+      return Error("--size", "must be WxH (two whole numbers, e.g. 640x480), got '" + text + "'");
+    };
+    const size_t x = text.find_first_of("xX");
+    if (x == std::string::npos) throw bad();
+    long long v[2] = {0, 0};
+    const std::string part[2] = {text.substr(0, x), text.substr(x + 1)};
+    for (int k = 0; k < 2; ++k) {
+      const char* b = part[k].data();
+      const char* e = b + part[k].size();
+      const auto [end, ec] = std::from_chars(b, e, v[k]);
+      if (part[k].empty() || ec == std::errc::result_out_of_range)
+        throw ec == std::errc::result_out_of_range
+            ? Error("--size", "image size '" + text + "' is out of range: each side must be in "
+                              "[1, " + std::to_string(limits::kMaxImageSide) + "]")
+            : bad();
+      if (ec != std::errc() || end != e) throw bad();
+    }
+    return {v[0], v[1]};
+  }
   app::BackendOptions backend_options() const {
+    validate();
     app::BackendOptions o;
     o.hw = params();
     o.fl = float_options();
@@ -110,6 +146,9 @@ struct CommonFlags {
           x < 0 || y < 0)
         throw Error("--trace-pixel", "must be X,Y (pixel column and row), got '" + trace_pixel + "'");
       o.trace_pixel = std::make_pair(x, y);
+      // The waveform's place is checked before the run (a missing directory, a directory or a
+      // device would otherwise cost a whole co-simulation and write nothing).
+      check_output_path(trace_out, "waveform");
     }
     return o;
   }
@@ -129,12 +168,14 @@ struct CommonFlags {
     tracer::FloatOptions o;
     o.n = p.n;
     o.n1 = p.n1;
-    o.threads = threads;
+    o.threads = static_cast<int>(threads);
     o.binning = !no_binning;
     o.grid = !no_grid;
     return o;
   }
-  ref::RefOptions ref_options() const { return {threads, !no_binning, !no_grid}; }
+  ref::RefOptions ref_options() const {
+    return {static_cast<int>(threads), !no_binning, !no_grid};
+  }
 };
 
 int render(const std::string& scene_arg, const std::string& backend, const std::string& output,
@@ -147,6 +188,8 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
     throw Error(bo.systemc ? "--systemc" : bo.fault ? "--rtl-fault" : "--trace-pixel",
                 "applies to --backend rtl only");
   image::check_writable(output);
+  if (same_file(scene_arg, output))
+    throw Error(output, "is the scene file being rendered; refusing to overwrite the input");
   const scene::CompiledScene sc = scene::compile_scene(flags.load(scene_arg));
   const app::BackendResult r = app::run_backend(backend, sc, bo);
   const image::Frame& frame = r.render.frame;
@@ -157,6 +200,7 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
     std::cerr << fmt::format("{}: {}x{} {} in {:.3f} s, {} hit pixels, {} ray/segment pairs\n",
                              output, frame.width, frame.height, backend, r.render.seconds,
                              frame.hit_pixels(), r.pairs);
+  if (!r.precision_warning.empty()) std::cerr << "rpu: warning: " << r.precision_warning << "\n";
   if (r.overflows > 0)
     std::cerr << fmt::format("rpu: warning: {} work items saturated a datapath value; widen "
                              "--coord-w or the fraction widths\n", r.overflows);
@@ -180,6 +224,7 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
 }
 
 int print_config(const CommonFlags& flags) {
+  flags.validate();
   const ref::HwParams p = flags.params();
   std::cout << p.describe()
             << fmt::format("threads    = {}\nbinning    = {}\ngrid       = {}\n",
@@ -245,12 +290,24 @@ int main(int argc, char** argv) {
 
   auto* list_cmd = app.add_subcommand("scenes", "list the built-in scenes");
 
-  CLI11_PARSE(app, argc, argv);
+  // A file-size limit (ulimit -f) must make a write fail with EFBIG, which is reported, rather
+  // than kill the process half-way through a file.
+  std::signal(SIGXFSZ, SIG_IGN);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    std::cerr << "rpu: error: command line: " << what << " (see rpu --help)\n";
+    return 1;
+  }
   try {
     if (render_cmd->parsed()) return render(scene_arg, backend, output, flags, quiet);
     if (config_cmd->parsed()) return print_config(flags);
     if (compare_cmd->parsed()) {
       compare.backends = flags.backend_options();
+      if (!compare_scene.starts_with("builtin:")) compare.input_file = compare_scene;
       return app::run_compare(compare_scene, flags.load(compare_scene), compare);
     }
     if (demo_cmd->parsed()) {
@@ -270,6 +327,9 @@ int main(int argc, char** argv) {
     }
   } catch (const rpu::Error& e) {
     std::cerr << "rpu: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "rpu: error: out of memory (see README, \"Limits\")\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "rpu: internal error: " << e.what() << "\n";

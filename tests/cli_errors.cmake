@@ -1,5 +1,6 @@
-# CLI contract for bad input (SCENE.md): one line on stderr naming the file, the JSON path and
-# the problem, and a non-zero exit; never a crash. Run as
+# CLI contract for bad input (SCENE.md, issue 11): exactly one line "rpu: error: <where>:
+# <problem>" on stderr naming the file, the JSON path and the problem, and exit status 1; never a
+# crash, never CLI11's own exit codes. Run as
 #   cmake -DRPU=path/to/rpu -DBAD=tests/bad_scenes -DOUT=dir -P cli_errors.cmake
 file(MAKE_DIRECTORY ${OUT})
 set(failures 0)
@@ -10,8 +11,11 @@ function(expect_error label expected_list)
                   TIMEOUT 60)
   string(STRIP "${err}" err)
   set(ok TRUE)
-  if(rc EQUAL 0 OR NOT rc MATCHES "^[0-9]+$" OR rc GREATER 127)
-    set(ok FALSE)  # 1 = user error, 100+ = CLI11 usage error; a signal or 0 fails
+  if(NOT rc STREQUAL "1")
+    set(ok FALSE)  # 1 = user error, usage errors included; anything else fails
+  endif()
+  if(NOT err MATCHES "^rpu: error: ")
+    set(ok FALSE)
   endif()
   foreach(part IN LISTS expected_list)
     string(FIND "${err}" "${part}" pos)
@@ -21,7 +25,7 @@ function(expect_error label expected_list)
   endforeach()
   string(REGEX MATCHALL "\n" newlines "${err}")
   list(LENGTH newlines nl)
-  if(nl GREATER 0 AND NOT label MATCHES "^usage")
+  if(nl GREATER 0)
     set(ok FALSE)  # exactly one line
   endif()
   if(ok)
@@ -57,7 +61,9 @@ expect_error("unknown image format" "x.nosuchformat;image format"
              render builtin:ellipse6 -o ${OUT}/x.nosuchformat)
 expect_error("unwritable output" "no_dir/x.png;does not exist"
              render builtin:ellipse6 -o ${OUT}/no_dir/x.png)
-expect_error("usage: missing output" "-o" render builtin:ellipse6)
+expect_error("usage: missing output" "command line: ;--output is required" render builtin:ellipse6)
+expect_error("usage: unknown flag" "command line: ;--frobnicate" render builtin:ellipse6 --frobnicate -o ${OUT}/x.png)
+expect_error("usage: not a number" "command line: ;--n" config --n sixteen)
 expect_error("bad metric" "--metric;abs or squared" render builtin:ellipse6 --backend ref --metric cube -o ${OUT}/x.png)
 expect_error("bad ip mode" "--ip;unrolled or iterative" config --ip sideways)
 expect_error("coord_w too small for the scene" "builtin:airfield: textures;coord_w = 12 is too small"
@@ -82,4 +88,4 @@ endif()
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} CLI error case(s) failed")
 endif()
-message(STATUS "${count} bad scene files and 12 bad command lines rejected cleanly; every backend renders")
+message(STATUS "${count} bad scene files and 14 bad command lines rejected cleanly; every backend renders")

@@ -6,7 +6,13 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -346,6 +352,140 @@ TEST(CompareReport, InconsistentInputNamesTheBackend) {
   } catch (const rpu::Error& e) {
     EXPECT_NE(std::string(e.what()).find("ref: pixel (4, 3)"), std::string::npos) << e.what();
   }
+}
+
+std::vector<std::string> names_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A rerun without the RTL removes the rtl outputs of the previous run (and nothing else).
+TEST(CompareReport, RerunRemovesStaleOutputsItOwns) {
+  const fs::path dir = fresh_dir("stale");
+  write_compare_report(full_input(), dir.string());
+  ASSERT_TRUE(fs::exists(dir / "rtl.png"));
+  std::ofstream(dir / "notes.txt") << "mine\n";
+  std::ofstream(dir / "rtl_backup.png") << "mine too\n";
+  CompareInput no_rtl = full_input();
+  no_rtl.renders.pop_back();
+  no_rtl.rtl = nullptr;
+  write_compare_report(no_rtl, dir.string());
+  for (const std::string& name : names_in(dir)) {
+    EXPECT_FALSE(name.starts_with("rtl.") || name.starts_with("rtl_x") ||
+                 name.starts_with("diff_rtl")) << name;
+    EXPECT_FALSE(name.starts_with(".rpu-compare-staging")) << name;
+  }
+  EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "rtl_backup.png"));
+  EXPECT_TRUE(fs::exists(dir / "ref.png"));
+}
+
+// A symlink named like an output is replaced; the file it points to (outside) is untouched.
+TEST(CompareReport, SymlinkedOutputsAreReplacedNotFollowed) {
+  const fs::path dir = fresh_dir("symlink");
+  const fs::path outside = fresh_dir("symlink_outside");
+  fs::create_directories(dir);
+  fs::create_directories(outside);
+  std::ofstream(outside / "precious.png") << "precious\n";
+  fs::create_symlink(outside / "precious.png", dir / "ref.png");
+  fs::create_symlink(outside / "precious.png", dir / "metrics.json");
+  write_compare_report(full_input(), dir.string());
+  EXPECT_EQ(read_text(outside / "precious.png"), "precious\n");
+  EXPECT_FALSE(fs::is_symlink(dir / "ref.png"));
+  EXPECT_FALSE(fs::is_symlink(dir / "metrics.json"));
+}
+
+// The scene file sitting in the output directory under an output's name is never overwritten.
+TEST(CompareReport, RefusesToOverwriteTheInput) {
+  const fs::path dir = fresh_dir("input");
+  fs::create_directories(dir);
+  std::ofstream(dir / "metrics.json") << "{\"camera\": {}}\n";
+  CompareInput in = full_input();
+  in.input_file = (dir / "metrics.json").string();
+  try {
+    write_compare_report(in, dir.string());
+    ADD_FAILURE() << "overwrote the input";
+  } catch (const rpu::Error& e) {
+    EXPECT_EQ(e.where(), (dir / "metrics.json").string());
+    EXPECT_NE(e.problem().find("scene file"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_text(dir / "metrics.json"), "{\"camera\": {}}\n");
+  EXPECT_EQ(names_in(dir), std::vector<std::string>{"metrics.json"});
+  // Also through a hard link under another owned name.
+  fs::remove(dir / "metrics.json");
+  std::ofstream(dir / "scene.json") << "{}\n";
+  fs::create_hard_link(dir / "scene.json", dir / "ref_x64.png");
+  in.input_file = (dir / "scene.json").string();
+  EXPECT_THROW(write_compare_report(in, dir.string()), rpu::Error);
+  EXPECT_THROW(check_compare_output("", ""), rpu::Error);
+}
+
+// In a death-test child: the report under a small file-size limit; exits 0 when it threw.
+[[noreturn]] void report_under_file_size_limit(const fs::path& dir) {
+  const rlimit limit{2048, 2048};
+  ::setrlimit(RLIMIT_FSIZE, &limit);
+  std::signal(SIGXFSZ, SIG_IGN);
+  try {
+    write_compare_report(full_input(), dir.string());
+  } catch (const rpu::Error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    std::exit(0);
+  }
+  std::exit(1);
+}
+
+// A failed write (full disk, file-size limit) leaves the previous report as it was and nothing
+// of the failed run: no partial images, no metrics.json.tmp, no staging directory.
+TEST(CompareReportDeathTest, FailureLeavesNoPartialOutputs) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const fs::path dir = fresh_dir("failure");
+  CompareInput small = full_input();
+  write_compare_report(small, dir.string());
+  const std::vector<std::string> before = names_in(dir);
+  const std::string metrics_before = read_text(dir / "metrics.json");
+  EXPECT_EXIT(report_under_file_size_limit(dir), ::testing::ExitedWithCode(0),
+              "cannot write the file: File too large");
+  EXPECT_EQ(names_in(dir), before);
+  EXPECT_EQ(read_text(dir / "metrics.json"), metrics_before);
+  const fs::path fresh = fresh_dir("failure_fresh");
+  EXPECT_EXIT(report_under_file_size_limit(fresh), ::testing::ExitedWithCode(0), "File too large");
+  EXPECT_TRUE(names_in(fresh).empty());
+}
+
+// ref vs float-ip beyond the documented bound: a field in metrics.json, the warning text, the
+// banner; within it, none of them.
+TEST(CompareReport, RefVsFloatIpBeyondTheBoundIsFlagged) {
+  const fs::path dir = fresh_dir("bound");
+  const CompareSummary s = write_compare_report(full_input(), dir.string());
+  // ref hits 15 pixels, float-ip 18; they differ on 3.
+  EXPECT_EQ(s.metrics["ref_vs_float_ip_hit_pixels"], 18);
+  EXPECT_EQ(s.metrics["ref_vs_float_ip_beyond_bound"], true);
+  EXPECT_EQ(s.metrics["ref_vs_float_ip_bound"], 0.001);
+  EXPECT_EQ(s.warning, "ref differs from float-ip on 3 of 18 hit pixels (16.67 %), beyond the "
+                       "documented bound of 0.1 %");
+  EXPECT_NE(read_text(dir / "report.html").find("banner warn\">WARNING: ref differs from float-ip"),
+            std::string::npos);
+  EXPECT_NE(read_text(dir / "metrics.json").find("\"ref_vs_float_ip_beyond_bound\": true"),
+            std::string::npos);
+
+  CompareInput agree = full_input();
+  agree.renders[1].frame = agree.renders[2].frame;  // float-ip = ref
+  const fs::path dir2 = fresh_dir("bound_ok");
+  const CompareSummary ok = write_compare_report(agree, dir2.string());
+  EXPECT_EQ(ok.metrics["ref_vs_float_ip_beyond_bound"], false);
+  EXPECT_TRUE(ok.warning.empty());
+  EXPECT_EQ(read_text(dir2 / "report.html").find("banner warn"), std::string::npos);
+}
+
+// Scene names are any bytes (file names need not be UTF-8): written, not an exception.
+TEST(CompareReport, NonUtf8SceneNameIsWritten) {
+  CompareInput in = full_input();
+  in.scene = "sc\xff\xfe.json";
+  const fs::path dir = fresh_dir("utf8");
+  EXPECT_NO_THROW(write_compare_report(in, dir.string()));
+  EXPECT_NE(read_text(dir / "metrics.json").find("\"scene\": \"sc"), std::string::npos);
 }
 
 }  // namespace

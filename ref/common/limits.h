@@ -17,6 +17,17 @@ inline constexpr long long kMaxImagePixels = 1LL << 26;
 // a FIFO, a device or /proc file is refused instead of blocking or growing without bound.
 inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{64} << 20;
 
+// Coordinate range of scene files: every position (points, camera eye and target), direction
+// (normals, camera up) and half_width must be a finite number with |v| <= kMaxCoordinate world
+// units. Larger values are refused as "out of range" at their JSON path: past this bound the
+// geometry's squared lengths and cross products lose their meaning (1e154 squared overflows a
+// double) long before the image could show anything. Every demo scene stays below 1e4.
+inline constexpr double kMaxCoordinate = 1e9;
+
+// Deepest nesting of arrays and objects in a scene file (the schema needs 4); deeper input is
+// refused before it is built, so a file of a million '[' cannot exhaust the stack or memory.
+inline constexpr int kMaxSceneJsonDepth = 64;
+
 // Largest sweep grid (configurations after expansion) and largest worker count.
 inline constexpr long long kMaxSweepConfigurations = 10000;
 inline constexpr int kMaxThreads = 1024;

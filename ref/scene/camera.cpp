@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "common/error.h"
+#include "scene/segment.h"
 
 namespace rpu::scene {
 
@@ -11,13 +12,16 @@ CameraFrame make_camera_frame(const Camera& camera, const std::string& source) {
   CameraFrame f;
   f.eye = camera.eye;
   const Vec3 forward = camera.target - camera.eye;
-  const double flen = length(forward);
-  if (!(flen > 0.0) || !std::isfinite(flen))
+  if (forward == Vec3{})
     throw Error(source + ": camera.target", "target coincides with the eye (no view direction)");
-  f.W = forward / flen;
-  const double ulen = length(camera.up);
-  if (!(ulen > 0.0)) throw Error(source + ": camera.up", "up vector has zero length");
-  const Vec3 right = cross(f.W, camera.up / ulen);
+  const std::optional<Vec3> W = unit_direction(forward);
+  if (!W)
+    throw Error(source + ": camera.target", "the view direction target - eye is out of range "
+                                            "(not a finite vector)");
+  f.W = *W;
+  const std::optional<Vec3> up = unit_direction(camera.up);
+  if (!up) throw Error(source + ": camera.up", "up vector has zero length");
+  const Vec3 right = cross(f.W, *up);
   const double rlen = length(right);
   if (rlen < 1e-9)
     throw Error(source + ": camera.up", "up vector is parallel to the view direction");

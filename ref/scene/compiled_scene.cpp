@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "common/error.h"
 #include "scene/normals.h"
 
@@ -30,6 +32,14 @@ void compile_polyline(const Polyline& line, const char* kind, int index, int pri
           throw Error(fmt::format("{}: {}[{}].points[{}]", source, kind, index, b),
                       fmt::format("repeated consecutive point (same as points[{}]); the segment "
                                   "would have zero length", a));
+        case SegmentDefect::kLengthOutOfRange: {
+          const Vec3 d = line.points[b] - line.points[a];
+          const double m = std::fmax(std::fabs(d.x), std::fmax(std::fabs(d.y), std::fabs(d.z)));
+          throw Error(fmt::format("{}: {}[{}].points[{}]", source, kind, index, b),
+                      fmt::format("the segment from points[{}] is too short to compute with "
+                                  "(length about {:.3g}; its squared length underflows a double); "
+                                  "scale the scene up", a, m));
+        }
         case SegmentDefect::kNormalParallelToChord:
           throw Error(fmt::format("{}: {}[{}].normals[{}]", source, kind, index, at),
                       fmt::format("normal is parallel to segment points[{}]→points[{}]; the arc "

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <set>
-#include <sstream>
+#include <optional>
 #include <string_view>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/input_file.h"
+#include "common/limits.h"
 
 namespace rpu::scene {
 namespace {
@@ -46,57 +46,123 @@ std::string describe(const Json& j) {
   }
 }
 
-// Tracks the JSON path of the value being parsed, so that errors raised inside nlohmann's
-// parser (duplicate keys, number overflow) can name a path.
-struct ParsePath {
-  struct Frame {
-    bool array = false;
-    size_t next_index = 0;  // arrays: index of the element being read
-    std::string key;        // objects: the last key read
-    std::set<std::string> keys;
-  };
-  std::vector<Frame> stack;  // open containers, outermost first
+// Builds the document in one pass of nlohmann's SAX parser (linear in the file size), tracking
+// the JSON path of the value being read so that errors found while parsing (duplicate keys,
+// number overflow, nesting too deep) can name it. (nlohmann's callback parser re-scans the parent
+// container at the end of every object: quadratic in the number of objects in an array.)
+class SceneSax {
+ public:
+  explicit SceneSax(const std::string& source) : source_(source) {}
 
-  // Path of the value inside the first `depth` open containers.
-  std::string path(size_t depth) const {
+  // The parsed document; valid when sax_parse returned true.
+  Json take() { return std::move(root_); }
+  // The error that stopped the parse (when a handler returned false), if any.
+  const std::optional<Error>& error() const { return error_; }
+
+  bool null() { return value(Json()); }
+  bool boolean(bool v) { return value(Json(v)); }
+  bool number_integer(Json::number_integer_t v) { return value(Json(v)); }
+  bool number_unsigned(Json::number_unsigned_t v) { return value(Json(v)); }
+  bool number_float(Json::number_float_t v, const std::string&) { return value(Json(v)); }
+  bool string(std::string& v) { return value(Json(std::move(v))); }
+  bool binary(Json::binary_t& v) { return value(Json::binary(std::move(v))); }
+
+  bool start_object(std::size_t) { return open(Json::object(), false); }
+  bool start_array(std::size_t) { return open(Json::array(), true); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(std::string& k) {
+    Frame& f = stack_.back();
+    if (f.container->contains(k))
+      return fail(path(stack_.size() - 1), "duplicate key '" + k + "'; each key may appear once");
+    f.key = std::move(k);
+    return true;
+  }
+
+  bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception& e) {
+    if (e.id == 406)  // a number literal too large for a double (e.g. 1e999)
+      return fail(path(stack_.size()),
+                  "not a finite number (it overflows a double); expected a finite number");
+    syntax_error_byte_ = byte;
+    syntax_error_ = e.what();
+    return false;
+  }
+
+  // Set when the parser stopped at a syntax error: its byte offset and nlohmann's message.
+  std::optional<std::size_t> syntax_error_byte() const { return syntax_error_byte_; }
+  const std::string& syntax_error() const { return syntax_error_; }
+
+ private:
+  struct Frame {
+    Json* container;  // the open array or object (inside root_)
+    bool array;
+    std::size_t next_index = 0;  // arrays: index of the element being read
+    std::string key;             // objects: the last key read
+  };
+
+  // Path of the value inside the first `depth` open containers ("" is the top level).
+  std::string path(std::size_t depth) const {
     std::string p;
-    for (size_t i = 0; i < depth; ++i) {
-      const Frame& f = stack[i];
-      if (f.array) {
-        p.append("[").append(std::to_string(f.next_index)).append("]");
-      } else {
-        p.append(p.empty() ? "" : ".").append(f.key);
-      }
+    for (std::size_t i = 0; i < depth; ++i) {
+      const Frame& f = stack_[i];
+      if (f.array) p.append("[").append(std::to_string(f.next_index)).append("]");
+      else p.append(p.empty() ? "" : ".").append(f.key);
     }
     return p;
   }
-  std::string current() const { return path(stack.size()); }
-  void element_done() {
-    if (!stack.empty() && stack.back().array) ++stack.back().next_index;
+
+  bool fail(const std::string& path, const std::string& problem) {
+    error_.emplace(path.empty() ? source_ : source_ + ": " + path, problem);
+    return false;
   }
-  // nlohmann parser callback: keeps every value, rejects duplicate keys.
-  bool on_event(Json::parse_event_t event, const Json& parsed, const std::string& source) {
-    using E = Json::parse_event_t;
-    switch (event) {
-      case E::object_start:
-      case E::array_start: stack.push_back({event == E::array_start, 0, "", {}}); break;
-      case E::object_end:
-      case E::array_end:
-        stack.pop_back();
-        element_done();
-        break;
-      case E::key: {
-        Frame& f = stack.back();
-        f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second)
-          Where{source, path(stack.size() - 1)}.fail("duplicate key '" + f.key +
-                                                     "'; each key may appear once");
-        break;
-      }
-      case E::value: element_done(); break;
+
+  // Stores `v` where the parser is (the top level, the next array element or the last key) and
+  // returns it.
+  Json* place(Json&& v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
     }
+    Frame& f = stack_.back();
+    if (f.array) {
+      f.container->push_back(std::move(v));
+      ++f.next_index;
+      return &f.container->back();
+    }
+    return &((*f.container)[f.key] = std::move(v));
+  }
+
+  bool value(Json&& v) {
+    place(std::move(v));
     return true;
   }
+
+  bool open(Json&& empty, bool array) {
+    if (stack_.size() >= static_cast<std::size_t>(limits::kMaxSceneJsonDepth))
+      return fail(path(stack_.size()),
+                  "nested too deeply: at most " + std::to_string(limits::kMaxSceneJsonDepth) +
+                      " levels of arrays and objects are allowed");
+    // Arrays count their elements when they are closed, so the path of an open array's element
+    // is its index; the index advances in place() when the element is stored.
+    Json* c = place(std::move(empty));
+    if (!stack_.empty() && stack_.back().array) --stack_.back().next_index;
+    stack_.push_back({c, array, 0, {}});
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    if (!stack_.empty() && stack_.back().array) ++stack_.back().next_index;
+    return true;
+  }
+
+  const std::string& source_;
+  Json root_;
+  std::vector<Frame> stack_;  // open containers, outermost first
+  std::optional<Error> error_;
+  std::optional<std::size_t> syntax_error_byte_;
+  std::string syntax_error_;
 };
 
 // 1-based line and column of the 1-based byte offset `byte` in `text`.
@@ -108,26 +174,33 @@ std::string line_column(const std::string& text, size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+// nlohmann's message without its "[json.exception.parse_error.N] parse error at line L,
+// column C: " prefix (the caller says where, in the file's own lines and columns).
+std::string parse_error_detail(const std::string& what) {
+  std::string detail = what;
+  if (detail.starts_with("[json.exception.")) {
+    const size_t close = detail.find("] ");
+    detail = close == std::string::npos ? std::string() : detail.substr(close + 2);
+  }
+  for (const std::string_view prefix : {"parse error at ", "parse error: ", "parse error "}) {
+    if (!detail.starts_with(prefix)) continue;
+    const size_t colon = detail.find(": ", detail.find("column"));
+    detail = colon == std::string::npos ? detail.substr(prefix.size()) : detail.substr(colon + 2);
+    break;
+  }
+  return detail.empty() ? "syntax error" : detail;
+}
+
 Json parse_json(const std::string& text, const std::string& source) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     Where{source, ""}.fail("the file is empty; expected a JSON object with a 'camera' key");
-  ParsePath path;
-  try {
-    return Json::parse(text, [&](int, Json::parse_event_t event, Json& parsed) {
-      return path.on_event(event, parsed, source);
-    });
-  } catch (const Json::parse_error& e) {
-    // nlohmann's message: "[json.exception.parse_error.N] parse error at line L, column C: ..."
-    const std::string what = e.what();
-    const size_t colon = what.find(": ", what.find("column"));
-    const std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-    Where{source, ""}.fail("invalid JSON at " + line_column(text, e.byte) + ": " + detail);
-  } catch (const Json::out_of_range& e) {
-    if (e.id != 406) throw;
-    // A number literal too large for a double (e.g. 1e999).
-    Where{source, path.current()}.fail("not a finite number (it overflows a double); expected a "
-                                       "finite number");
-  }
+  SceneSax sax(source);
+  if (Json::sax_parse(text, &sax)) return sax.take();
+  if (sax.error()) throw *sax.error();
+  if (sax.syntax_error_byte())
+    Where{source, ""}.fail("invalid JSON at " + line_column(text, *sax.syntax_error_byte()) + ": " +
+                           parse_error_detail(sax.syntax_error()));
+  Where{source, ""}.fail("invalid JSON");
 }
 
 // Checks that `j` is an object whose keys are all in `allowed`.
@@ -167,17 +240,28 @@ bool boolean(const Json& j, const Where& w) {
   return j.get<bool>();
 }
 
-// An array of exactly `dims` (2 or 3) finite numbers; z = 0 when dims is 2.
-Vec3 vec(const Json& j, const Where& w, size_t dims) {
+// A finite number within the coordinate range (limits::kMaxCoordinate).
+double coordinate(const Json& j, const Where& w) {
+  const double v = number(j, w);
+  if (std::fabs(v) > limits::kMaxCoordinate)
+    w.fail("out of range: " + j.dump() + "; coordinates must be finite with magnitude at most " +
+           fmt::format("{:g}", limits::kMaxCoordinate) + " (README, \"Limits\")");
+  return v;
+}
+
+// An array of exactly `dims` (2 or 3) finite numbers; z = 0 when dims is 2. Positions and
+// directions (`in_range`) are held to the coordinate range; colours check their own range.
+Vec3 vec(const Json& j, const Where& w, size_t dims, bool in_range = true) {
   const std::string expected = "expected an array of " + std::to_string(dims) + " numbers";
   if (!j.is_array() || j.size() != dims) w.fail(expected + ", got " + describe(j));
   double c[3] = {0.0, 0.0, 0.0};
-  for (size_t i = 0; i < dims; ++i) c[i] = number(j[i], w.index(i));
+  for (size_t i = 0; i < dims; ++i)
+    c[i] = in_range ? coordinate(j[i], w.index(i)) : number(j[i], w.index(i));
   return {c[0], c[1], c[2]};
 }
 
 Color color(const Json& j, const Where& w) {
-  const Vec3 v = vec(j, w, 3);
+  const Vec3 v = vec(j, w, 3, /*in_range=*/false);
   const Color c{v.x, v.y, v.z};
   for (size_t i = 0; i < 3; ++i)
     if (!(c[i] >= 0.0 && c[i] <= 1.0))
@@ -208,11 +292,8 @@ Camera camera(const Json& j, const Where& w) {
                           j["fov_deg"].dump());
   cam.width = image_side(required(j, w, "width"), w.key("width"));
   cam.height = image_side(required(j, w, "height"), w.key("height"));
-  const long long pixels = static_cast<long long>(cam.width) * cam.height;
-  if (pixels > kMaxImagePixels)
-    w.fail("image of " + std::to_string(cam.width) + " x " + std::to_string(cam.height) + " = " +
-           std::to_string(pixels) + " pixels exceeds the limit of " +
-           std::to_string(kMaxImagePixels) + " pixels");
+  // The same limit as --size and --max-side (common/limits.h).
+  limits::check_image_size(w.source + ": " + w.path, cam.width, cam.height);
   return cam;
 }
 
@@ -268,7 +349,7 @@ Texture texture(const Json& j, const Where& w) {
   Texture t;
   polyline(j, w, 2, "texture", t);
   const Json& hw = required(j, w, "half_width");
-  t.half_width = number(hw, w.key("half_width"));
+  t.half_width = coordinate(hw, w.key("half_width"));
   if (!(t.half_width > 0.0))
     w.key("half_width").fail("half_width must be greater than 0, got " + hw.dump());
   return t;
@@ -307,15 +388,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 }
 
 Scene load_scene(const std::string& path) {
-  const Where file{path, ""};
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) file.fail("is a directory, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) file.fail("cannot open the scene file (missing or unreadable)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) file.fail("cannot read the scene file");
-  return parse_scene(text.str(), path);
+  return parse_scene(read_input_file(path, "scene file"), path);
 }
 
 }  // namespace rpu::scene

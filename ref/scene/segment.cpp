@@ -5,6 +5,15 @@
 
 namespace rpu::scene {
 
+std::optional<Vec3> unit_direction(const Vec3& v) {
+  if (!is_finite(v) || v == Vec3{}) return std::nullopt;
+  const double len = length(v);
+  if (len > 1e-150 && len < 1e150) return v / len;  // the ordinary case, unchanged
+  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  const Vec3 w = v / m;
+  return w / length(w);
+}
+
 std::optional<Segment> make_segment(const Vec3& p1, const Vec3& p2, const Vec3& n1_in,
                                     const Vec3& n2_in, SegmentDefect& defect, int& defect_end) {
   defect = SegmentDefect::kNone;
@@ -15,8 +24,13 @@ std::optional<Segment> make_segment(const Vec3& p1, const Vec3& p2, const Vec3& 
   s.d = p2 - p1;
   s.L2 = length_squared(s.d);
   s.L = std::sqrt(s.L2);
-  if (!(s.L > 0.0) || !std::isfinite(s.L2)) {
+  if (p1 == p2) {
     defect = SegmentDefect::kRepeatedPoint;
+    defect_end = 1;
+    return std::nullopt;
+  }
+  if (!(s.L2 >= std::numeric_limits<double>::min()) || !std::isfinite(s.L2)) {
+    defect = SegmentDefect::kLengthOutOfRange;
     defect_end = 1;
     return std::nullopt;
   }
@@ -26,13 +40,13 @@ std::optional<Segment> make_segment(const Vec3& p1, const Vec3& p2, const Vec3& 
   const Vec3 normals_in[2] = {n1_in, n2_in};
   const Vec3 ends[2] = {p1, p2};
   for (int k = 0; k < 2; ++k) {
-    const double nlen = length(normals_in[k]);
-    if (!(nlen > 0.0)) {
+    const std::optional<Vec3> unit = unit_direction(normals_in[k]);
+    if (!unit) {
       defect = SegmentDefect::kZeroNormal;
       defect_end = k;
       return std::nullopt;
     }
-    const Vec3 n = normals_in[k] / nlen;
+    const Vec3 n = *unit;
     (k == 0 ? s.n1 : s.n2) = n;
     const double cosine = dot(n, dhat);
     const double sine = length(cross(n, dhat));

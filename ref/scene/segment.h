@@ -31,7 +31,16 @@ struct Segment {
 };
 
 // Why a segment cannot be built; the compiler turns these into errors with a JSON path.
-enum class SegmentDefect { kNone, kRepeatedPoint, kNormalParallelToChord, kZeroNormal };
+// kLengthOutOfRange: the two points differ, but the chord's squared length under- or overflows
+// a double (points a few 1e-162 apart), so no segment constant can be computed.
+enum class SegmentDefect {
+  kNone, kRepeatedPoint, kNormalParallelToChord, kZeroNormal, kLengthOutOfRange };
+
+// The unit vector along v, or std::nullopt when v is zero or not finite. Exactly v / |v| where
+// |v|² is an ordinary double; otherwise v is first divided by its largest component, so that
+// directions with tiny (subnormal) or huge components keep their direction instead of being
+// taken for zero or infinite.
+std::optional<Vec3> unit_direction(const Vec3& v);
 
 // |cos| between a normal and the chord below which the reference sphere's centre is taken to be
 // at infinity and that end's guide is straight.

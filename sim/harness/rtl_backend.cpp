@@ -1,6 +1,7 @@
 #include "rtl_backend.h"
 
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "image/output_file.h"
 #include "stream_file.h"
 #include "top_ports.h"
 
@@ -86,6 +88,8 @@ std::string describe_rtl_configs() {
 
 RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
                      const RtlOptions& o) {
+  // Where the waveform goes is checked before the co-simulation, not after it.
+  if (o.trace_pixel) check_output_path(o.trace_path, "waveform");
   const FrameSchedule f = schedule_frame(sc, m, o.ref);
   Scoreboard sb(f, m, o.max_reports);
   RtlRender out;
@@ -132,14 +136,34 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
       throw Error("--trace-pixel", fmt::format("the configuration {} is not built with FST "
                                                "tracing (traceable ones: see `rpu config`)",
                                                cfg ? cfg->name : describe(m.params)));
-    auto top = cfg->make(o.x_seed);
     const auto [ti, tj] = *o.trace_pixel;
     if (ti < 0 || tj < 0 || ti >= f.width || tj >= f.height)
       throw Error("--trace-pixel", fmt::format("pixel ({},{}) is outside the {}x{} image", ti, tj,
                                                f.width, f.height));
-    if (!trace_pixel(*top, f, m, ti, tj, o.trace_path, &out.trace_log))
+    // The waveform goes to a temporary beside --trace-out and is renamed over it only when it
+    // was written: the FST writer reports no errors, so the file must exist and hold something.
+    const std::string tmp = temporary_path_beside(o.trace_path);
+    bool traced = false;
+    {
+      auto top = cfg->make(o.x_seed);  // destroyed (the FST closed) at the end of this block
+      traced = trace_pixel(*top, f, m, ti, tj, tmp, &out.trace_log);
+    }
+    struct stat st {};
+    const bool written = ::stat(tmp.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0;
+    if (!traced) {
+      ::unlink(tmp.c_str());
       out.trace_log = fmt::format("pixel ({},{}) has no work items (background by schedule); no "
                                   "waveform written\n", ti, tj);
+    } else if (!written) {
+      ::unlink(tmp.c_str());
+      throw Error(o.trace_path, "the waveform (--trace-out) could not be written (full disk or "
+                                "file-size limit?)");
+    } else {
+      commit_temporary(tmp, o.trace_path);
+      // The log names the file the user asked for, not the temporary.
+      for (size_t at; (at = out.trace_log.find(tmp)) != std::string::npos;)
+        out.trace_log.replace(at, tmp.size(), o.trace_path);
+    }
   }
   return out;
 }
