@@ -23,7 +23,8 @@ struct SweepOptions {
 };
 
 // Returns the exit status: 0 when every configuration finished (invalid parameter combinations
-// are recorded, not failures), 2 when some failed; bad sweep files throw rpu::Error.
+// are recorded, not failures), 2 when some failed; bad sweep files, an all-invalid grid, bad
+// scenes and out-of-range options throw rpu::Error.
 int run_sweep(const SweepOptions& o);
 
 }  // namespace rpu::app

@@ -1,0 +1,89 @@
+#include "sweep_cosim_build.h"
+
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+#include "sweep_process.h"
+#if RPU_HAVE_RTL
+#include "rtl_backend.h"
+#include "top_ports.h"
+#endif
+
+namespace rpu::app {
+
+namespace fs = std::filesystem;
+
+#if RPU_HAVE_RTL
+namespace {
+
+std::string cosim_name(const SweepConfig& c) { return "c" + c.id; }
+
+// "N=16,N1=2,..." for RPU_COSIM_CONFIGS.
+std::string verilog_params(const SweepConfig& c) {
+  std::string out;
+  for (const SweepParam& p : kSweepParams)
+    out += fmt::format("{}{}={}", out.empty() ? "" : ",", p.verilog, verilog_value(p, c.params_json));
+  return out;
+}
+
+}  // namespace
+#endif
+
+bool has_builtin_rtl(const ref::HwParams& p) {
+#if RPU_HAVE_RTL
+  for (const auto& rc : sim::rtl_configs())
+    if (!rc.fault && rc.params == p) return true;
+#else
+  (void)p;
+#endif
+  return false;
+}
+
+std::map<std::string, std::string> build_cosim(const std::vector<const SweepConfig*>& todo,
+                                               const fs::path& out_dir, int jobs) {
+  std::map<std::string, std::string> exes;
+#if RPU_HAVE_RTL
+  const fs::path dir = out_dir / "rtl_build";
+  std::string list;
+  size_t need = 0;
+  std::error_code ec;
+  for (const SweepConfig* c : todo) {
+    try {
+      c->params.validate();
+    } catch (const Error&) {
+      continue;
+    }
+    if (has_builtin_rtl(c->params)) continue;
+    if (!fs::exists(dir / ("cosim_" + cosim_name(*c)), ec)) ++need;
+    list += (list.empty() ? "" : ";") + cosim_name(*c) + ":" + verilog_params(*c);
+  }
+  if (need > 0) {
+    const fs::path log = dir / "build.log";
+    std::cerr << fmt::format("rpu sweep: Verilating {} configurations into {} (log: {})\n", need,
+                             dir.string(), log.string());
+    fs::create_directories(dir, ec);
+    if (ec) throw Error(dir.string(), "cannot create the build directory: " + ec.message());
+    int rc = run_child({"cmake", "-S", RPU_SOURCE_DIR, "-B", dir.string(), "-G", "Ninja",
+                        "-DRPU_COSIM_ONLY=ON", "-DRPU_COSIM_CONFIGS=" + list},
+                       {log.string(), log.string(), false});
+    if (rc == 0)
+      rc = run_child({"ninja", "-C", dir.string(), "-k", "0", "-j", std::to_string(std::max(1, jobs))},
+                     {log.string(), log.string(), true});
+    if (rc != 0)
+      std::cerr << "rpu sweep: some co-simulation builds failed; their rows say so (see the log)\n";
+  }
+  for (const SweepConfig* c : todo) {
+    const fs::path exe = dir / ("cosim_" + cosim_name(*c));
+    if (fs::exists(exe, ec)) exes[c->id] = exe.string();
+  }
+#else
+  (void)todo;
+  (void)out_dir;
+  (void)jobs;
+#endif
+  return exes;
+}
+
+}  // namespace rpu::app

@@ -1,0 +1,420 @@
+#include "sweep_spec.h"
+
+#include <algorithm>
+#include <climits>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "backends.h"
+#include "builtin_scenes.h"
+#include "common/error.h"
+#include "common/input_file.h"
+#include "common/limits.h"
+#include "scene/scene_json.h"
+
+namespace rpu::app {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// "<file>: <json path>" for messages.
+std::string at(const std::string& file, const std::string& json_path) {
+  return json_path.empty() ? file : file + ": " + json_path;
+}
+
+// What a JSON value is, for "got ..." in messages.
+std::string describe(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return j.get<bool>() ? "true" : "false";
+    case json::value_t::string: return "a string";
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    default: return j.dump();  // a number: its text
+  }
+}
+
+// Tracks the JSON path of the value being parsed, so that a duplicate key, which nlohmann's
+// parser would silently resolve (the last one wins), is refused naming its path.
+class ParsePath {
+ public:
+  explicit ParsePath(std::string file) : file_(std::move(file)) {}
+
+  bool on_event(json::parse_event_t event, const json& parsed) {
+    using E = json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start: stack_.push_back({event == E::array_start, 0, "", {}}); break;
+      case E::object_end:
+      case E::array_end:
+        stack_.pop_back();
+        element_done();
+        break;
+      case E::key: {
+        Frame& f = stack_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second)
+          throw Error(at(file_, path()), fmt::format("duplicate key \"{}\" (each key may appear "
+                                                     "once)", f.key));
+        break;
+      }
+      case E::value: element_done(); break;
+    }
+    return true;
+  }
+
+  // The path of the value being read ("grid.n[2]").
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : stack_) {
+      if (f.array) p += fmt::format("[{}]", f.next_index);
+      else if (!f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
+    }
+    return p;
+  }
+
+ private:
+  struct Frame {
+    bool array = false;
+    size_t next_index = 0;  // arrays: the element being read
+    std::string key;        // objects: the last key read
+    std::set<std::string> keys;
+  };
+  void element_done() {
+    if (!stack_.empty() && stack_.back().array) ++stack_.back().next_index;
+  }
+  std::string file_;
+  std::vector<Frame> stack_;
+};
+
+json parse_json(const std::string& text, const std::string& file) {
+  ParsePath path(file);
+  try {
+    return json::parse(text, [&](int, json::parse_event_t event, json& parsed) {
+      return path.on_event(event, parsed);
+    });
+  } catch (const json::parse_error& e) {
+    // nlohmann's text is "[json.exception.parse_error.N] parse error at line L, column C: ...";
+    // keep "line L, column C: ..." only.
+    const std::string what = e.what();
+    const size_t line = what.find("line ");
+    throw Error(file, "not valid JSON: " + (line == std::string::npos ? std::string("syntax error")
+                                                                        : what.substr(line)));
+  } catch (const json::exception&) {
+    // A number too large for a double (1e999) and the like.
+    throw Error(at(file, path.path()), "not a valid JSON value (a number out of range?)");
+  }
+}
+
+// Refuses keys of `object` (at json_path in file) outside `allowed`.
+void allow_keys(const json& object, const std::string& file, const std::string& json_path,
+                std::initializer_list<std::string_view> allowed) {
+  for (const auto& [k, v] : object.items()) {
+    if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
+    std::string list;
+    for (std::string_view a : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
+    throw Error(at(file, json_path.empty() ? k : json_path + "." + k),
+                fmt::format("unknown key (allowed: {})", list));
+  }
+}
+
+bool read_bool(const json& v, const std::string& where) {
+  if (!v.is_boolean()) throw Error(where, "must be true or false, got " + describe(v));
+  return v.get<bool>();
+}
+
+// An integer in [lo, hi]; numbers past 64 bits (4294967312, 1e30) are refused, never wrapped.
+long long read_int(const json& v, const std::string& where, long long lo, long long hi) {
+  if (!v.is_number_integer())
+    throw Error(where, "must be an integer, got " + describe(v));
+  const bool fits = v.is_number_unsigned()
+                        ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(LLONG_MAX) &&
+                              v.get<std::int64_t>() >= lo && v.get<std::int64_t>() <= hi
+                        : v.get<std::int64_t>() >= lo && v.get<std::int64_t>() <= hi;
+  if (!fits) throw Error(where, fmt::format("{} is out of range [{}, {}]", v.dump(), lo, hi));
+  return v.get<std::int64_t>();
+}
+
+// [width, height] within the project's image limits.
+std::pair<int, int> read_size(const json& v, const std::string& where) {
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
+    throw Error(where, "must be [width, height], two integers");
+  // Past 64 bits the sides are out of range whatever they are; within, the limit says so.
+  if ((v[0].is_number_unsigned() && v[0].get<std::uint64_t>() > LLONG_MAX) ||
+      (v[1].is_number_unsigned() && v[1].get<std::uint64_t>() > LLONG_MAX))
+    throw Error(where, fmt::format("image size {}x{} is out of range: each side must be in [1, {}]",
+                                   v[0].dump(), v[1].dump(), limits::kMaxImageSide));
+  const long long w = v[0].get<std::int64_t>(), h = v[1].get<std::int64_t>();
+  limits::check_image_size(where, w, h);
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+// Sets one parameter from a JSON value; `where` names it for errors. Values outside int are
+// refused here; HwParams::validate judges the rest per configuration.
+void set_param(ref::HwParams& p, const std::string& key, const json& v, const std::string& where) {
+  if (key == "metric" || key == "ip") {
+    if (!v.is_string()) throw Error(where, "must be a string, got " + describe(v));
+    const std::string s = v.get<std::string>();
+    if (key == "metric") {
+      if (s != "abs" && s != "squared") throw Error(where, "must be abs or squared");
+      p.metric = s == "abs" ? ref::Metric::kAbs : ref::Metric::kSquared;
+    } else {
+      if (s != "unrolled" && s != "iterative") throw Error(where, "must be unrolled or iterative");
+      p.unrolled = s == "unrolled";
+    }
+    return;
+  }
+  int* field = key == "n"           ? &p.n
+               : key == "n1"        ? &p.n1
+               : key == "coord_w"   ? &p.coord_w
+               : key == "dir_frac"  ? &p.dir_frac
+               : key == "t_frac"    ? &p.t_frac
+               : key == "unit_frac" ? &p.unit_frac
+               : key == "edge_frac" ? &p.edge_frac
+               : key == "inv_w"     ? &p.inv_w
+               : key == "sqrt_w"    ? &p.sqrt_w
+                                    : nullptr;
+  if (!field)
+    throw Error(where, "unknown hardware parameter (n, n1, coord_w, dir_frac, t_frac, unit_frac, "
+                       "edge_frac, inv_w, sqrt_w, metric, ip)");
+  *field = static_cast<int>(read_int(v, where, INT_MIN, INT_MAX));
+}
+
+std::vector<SweepScene> read_scenes(const json& j, const std::string& file) {
+  const std::string where = at(file, "scenes");
+  if (!j.is_array() || j.empty())
+    throw Error(where, "must be a non-empty array of scene files or builtin:NAME");
+  // Relative scene files are relative to the sweep file's directory, never the current one.
+  const fs::path base = fs::path(file).parent_path();
+  std::vector<SweepScene> scenes;
+  std::map<std::string, size_t> seen;  // normalised path → index
+  for (size_t k = 0; k < j.size(); ++k) {
+    const std::string w = fmt::format("{}[{}]", where, k);
+    if (!j[k].is_string()) throw Error(w, "must be a string, got " + describe(j[k]));
+    SweepScene sc;
+    sc.argument = j[k].get<std::string>();
+    if (sc.argument.empty()) throw Error(w, "must name a scene file or builtin:NAME");
+    const bool builtin = sc.argument.starts_with("builtin:");
+    sc.path = builtin || fs::path(sc.argument).is_absolute() ? sc.argument
+                                                             : (base / sc.argument).string();
+    sc.label = builtin ? sc.argument.substr(8) : fs::path(sc.argument).stem().string();
+    const std::string normal = builtin ? sc.path : fs::path(sc.path).lexically_normal().string();
+    const auto [it, fresh] = seen.emplace(normal, k);
+    if (!fresh)
+      throw Error(w, fmt::format("the same scene as scenes[{}]; list each scene once", it->second));
+    scenes.push_back(sc);
+  }
+  // Two scenes with one stem (a/scene.json, b/scene.json) are told apart by their arguments.
+  std::map<std::string, int> count;
+  for (const SweepScene& sc : scenes) ++count[sc.label];
+  for (SweepScene& sc : scenes)
+    if (count[sc.label] > 1) sc.label = sc.argument;
+  std::set<std::string> labels;
+  for (size_t k = 0; k < scenes.size(); ++k)
+    if (!labels.insert(scenes[k].label).second) {
+      scenes[k].label += fmt::format("#{}", k);
+      labels.insert(scenes[k].label);
+    }
+  return scenes;
+}
+
+// Number of configurations of a grid whose lists have these lengths, or -1 past the limit
+// (checked before every multiplication, so it never overflows).
+long long grid_size(const std::vector<size_t>& lengths) {
+  long long product = 1;
+  for (size_t n : lengths) {
+    if (n != 0 && product > limits::kMaxSweepConfigurations / static_cast<long long>(n)) return -1;
+    product *= static_cast<long long>(n);
+  }
+  return product;
+}
+
+void read_grid(const json& g, const std::string& file, SweepSpec& s) {
+  const std::string where = at(file, "grid");
+  if (!g.is_object() || g.empty())
+    throw Error(where, "must be an object of parameter lists, e.g. {\"n\": [8, 16]}");
+  std::vector<size_t> lengths;
+  std::string shape;
+  for (const auto& [k, v] : g.items()) {
+    lengths.push_back(v.is_array() ? v.size() : 1);
+    shape += fmt::format("{}{} {}", shape.empty() ? "" : " x ", lengths.back(), k);
+  }
+  const long long size = grid_size(lengths);
+  if (size < 0 || size > limits::kMaxSweepConfigurations) {
+    double product = 1;  // for the message only; the check above is exact
+    for (size_t n : lengths) product *= static_cast<double>(n);
+    throw Error(where, fmt::format("too many configurations: {} ({}); at most {} allowed",
+                                   product < 1e15 ? fmt::format("{:.0f}", product)
+                                                  : fmt::format("{:.3g}", product),
+                                   shape, limits::kMaxSweepConfigurations));
+  }
+  for (const auto& [k, v] : g.items()) {
+    const std::string wk = where + "." + k;
+    if (std::none_of(std::begin(kSweepParams), std::end(kSweepParams),
+                     [&](const SweepParam& p) { return k == p.key; }))
+      throw Error(wk, "unknown hardware parameter (n, n1, coord_w, dir_frac, t_frac, unit_frac, "
+                      "edge_frac, inv_w, sqrt_w, metric, ip)");
+    std::vector<json> values = v.is_array() ? v.get<std::vector<json>>() : std::vector<json>{v};
+    if (values.empty()) throw Error(wk, "must not be empty");
+    std::map<std::string, size_t> seen;  // value text → first index
+    for (size_t q = 0; q < values.size(); ++q) {
+      const std::string wq = v.is_array() ? fmt::format("{}[{}]", wk, q) : wk;
+      ref::HwParams probe;
+      set_param(probe, k, values[q], wq);
+      const auto [it, fresh] = seen.emplace(values[q].dump(), q);
+      if (!fresh)
+        throw Error(wq, fmt::format("repeats {} of grid.{}[{}]; list each value once",
+                                    values[q].dump(), k, it->second));
+    }
+    s.grid.emplace_back(k, values);
+  }
+}
+
+void read_rtl(const json& r, const std::string& file, SweepSpec& s) {
+  const std::string where = at(file, "rtl");
+  if (r.is_boolean()) {
+    s.rtl = r.get<bool>();
+    return;
+  }
+  if (!r.is_object())
+    throw Error(where, "must be true, false or {\"enabled\", \"resolution\", \"build\"}");
+  allow_keys(r, file, "rtl", {"enabled", "resolution", "build"});
+  s.rtl = r.contains("enabled") ? read_bool(r["enabled"], where + ".enabled") : true;
+  if (r.contains("build")) s.rtl_build = read_bool(r["build"], where + ".build");
+  if (r.contains("resolution"))
+    std::tie(s.rtl_width, s.rtl_height) = read_size(r["resolution"], where + ".resolution");
+}
+
+void read_yosys(const json& y, const std::string& file, SweepSpec& s) {
+  const std::string where = at(file, "yosys");
+  if (y.is_boolean()) {
+    s.yosys = y.get<bool>();
+    return;
+  }
+  if (!y.is_object())
+    throw Error(where, "must be true, false or {\"enabled\", \"module\", \"timeout\", \"scale\"}");
+  allow_keys(y, file, "yosys", {"enabled", "module", "timeout", "scale"});
+  s.yosys = y.contains("enabled") ? read_bool(y["enabled"], where + ".enabled") : true;
+  if (y.contains("module")) {
+    if (!y["module"].is_string())
+      throw Error(where + ".module", "must be a string, got " + describe(y["module"]));
+    s.yosys_module = y["module"].get<std::string>();
+  }
+  if (!std::regex_match(s.yosys_module, std::regex("rpu_[a-z0-9_]+")))
+    throw Error(where + ".module", "must name an rtl/ module (rpu_...)");
+  if (y.contains("timeout"))
+    s.yosys_timeout = static_cast<int>(read_int(y["timeout"], where + ".timeout", 1, 7 * 24 * 3600));
+  if (y.contains("scale")) {
+    if (!y["scale"].is_string() || y["scale"] != "ip_candidates")
+      throw Error(where + ".scale", "must be \"ip_candidates\" or absent");
+    s.scale_ip_candidates = true;
+    if (s.yosys_module != "rpu_candidate")
+      throw Error(where + ".scale", "ip_candidates needs module rpu_candidate");
+  }
+}
+
+}  // namespace
+
+std::string verilog_value(const SweepParam& p, const json& params) {
+  const json& v = params[p.key];
+  if (!v.is_string()) return v.dump();
+  if (p.key == std::string("ip")) return v == "unrolled" ? "1" : "0";
+  return v == "abs" ? "0" : "1";
+}
+
+std::string hash_hex(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+std::string dump_json(const json& j, int indent) {
+  return j.dump(indent, ' ', false, json::error_handler_t::replace);
+}
+
+SweepSpec parse_sweep_file(const std::string& path) {
+  const json j = parse_json(read_input_file(path, "sweep file"), path);
+  SweepSpec s;
+  s.path = path;
+  if (!j.is_object()) throw Error(path, "must be a JSON object");
+  allow_keys(j, path, "", {"scenes", "resolution", "grid", "base", "rtl", "yosys", "description"});
+  if (!j.contains("scenes"))
+    throw Error(at(path, "scenes"), "must be a non-empty array of scene files or builtin:NAME");
+  s.scenes = read_scenes(j["scenes"], path);
+  if (j.contains("description") && !j["description"].is_string())
+    throw Error(at(path, "description"), "must be a string");
+  if (j.contains("resolution"))
+    std::tie(s.width, s.height) = read_size(j["resolution"], at(path, "resolution"));
+  if (j.contains("base")) {
+    if (!j["base"].is_object()) throw Error(at(path, "base"), "must be an object");
+    for (const auto& [k, v] : j["base"].items()) set_param(s.base, k, v, at(path, "base." + k));
+  }
+  if (!j.contains("grid"))
+    throw Error(at(path, "grid"), "must be an object of parameter lists, e.g. {\"n\": [8, 16]}");
+  read_grid(j["grid"], path, s);
+  if (j.contains("rtl")) read_rtl(j["rtl"], path, s);
+  if (j.contains("yosys")) read_yosys(j["yosys"], path, s);
+  return s;
+}
+
+LoadedScenes load_sweep_scenes(const SweepSpec& s) {
+  LoadedScenes out;
+  std::string all;
+  for (const SweepScene& sc : s.scenes) {
+    std::string text;
+    if (sc.path.starts_with("builtin:")) {
+      const std::string name = sc.path.substr(8);
+      const auto& known = builtin_scenes();
+      const auto it = std::find_if(known.begin(), known.end(),
+                                   [&](const BuiltinScene& b) { return name == b.name; });
+      if (it == known.end()) {
+        out.scenes.push_back(load_scene_argument(sc.path));  // throws, naming the known ones
+        continue;
+      }
+      text = it->json;
+    } else {
+      text = read_input_file(sc.path, "scene file");
+    }
+    out.scenes.push_back(scene::parse_scene(text, sc.path));
+    all += sc.label + '\0' + hash_hex(text) + '\0';
+  }
+  out.fingerprint = hash_hex(all);
+  return out;
+}
+
+std::string sweep_fingerprint(const SweepSpec& s, const LoadedScenes& scenes) {
+  return hash_hex(dump_json(json({{"scenes", scenes.fingerprint}, {"w", s.width}, {"h", s.height},
+                                  {"rtl", s.rtl}, {"rw", s.rtl_width}, {"rh", s.rtl_height},
+                                  {"yosys", s.yosys}, {"ym", s.yosys_module},
+                                  {"scale", s.scale_ip_candidates}, {"rb", s.rtl_build}})));
+}
+
+std::vector<SweepConfig> expand_grid(const SweepSpec& s) {
+  std::vector<SweepConfig> out;
+  std::set<std::string> ids;
+  std::vector<size_t> idx(s.grid.size(), 0);
+  for (;;) {
+    SweepConfig c;
+    c.params = s.base;
+    for (size_t k = 0; k < s.grid.size(); ++k)
+      set_param(c.params, s.grid[k].first, s.grid[k].second[idx[k]], s.grid[k].first);
+    c.params_json = hw_params_json(c.params);
+    c.id = hash_hex(c.params_json.dump());
+    if (ids.insert(c.id).second) out.push_back(std::move(c));  // each configuration once
+    size_t k = 0;
+    while (k < idx.size() && ++idx[k] == s.grid[k].second.size()) idx[k++] = 0;
+    if (k == idx.size()) break;
+  }
+  return out;
+}
+
+}  // namespace rpu::app

@@ -1,0 +1,95 @@
+// The sweep file of `rpu sweep` (docs/sweeps.md): its schema, strictly checked, and the grid's
+// configurations. Every mistake in the file is one rpu::Error "<file>: <json path>: <problem>":
+// unknown or duplicate keys, wrong types, out-of-range numbers, repeated grid values, image
+// sizes past limits::check_image_size, grids past limits::kMaxSweepConfigurations.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/hw_params.h"
+#include "scene/scene.h"
+
+namespace rpu::app {
+
+// The hardware parameters a grid may name, in canonical order, with their Verilog names.
+struct SweepParam {
+  const char* key;
+  const char* verilog;
+};
+inline constexpr SweepParam kSweepParams[] = {
+    {"n", "N"},           {"n1", "N1"},           {"coord_w", "CoordW"},  {"dir_frac", "DirFrac"},
+    {"t_frac", "TFrac"},  {"unit_frac", "UnitFrac"}, {"edge_frac", "EdgeFrac"}, {"inv_w", "InvW"},
+    {"sqrt_w", "SqrtW"},  {"metric", "Metric"},     {"ip", "Unrolled"}};
+
+// A parameter's Verilog value in a row's parameters: integers as they are, metric abs/squared
+// 0/1, ip unrolled 1.
+std::string verilog_value(const SweepParam& p, const nlohmann::json& params);
+
+// One scene of the sweep.
+struct SweepScene {
+  std::string argument;  // as written in the sweep file
+  std::string path;      // the file read (relative paths: from the sweep file's directory), or
+                         // builtin:NAME
+  std::string label;     // its key in a row's "scenes" and its results.csv columns; distinct
+                         // per sweep (the file's stem; the argument when two stems agree)
+};
+
+struct SweepSpec {
+  std::string path;
+  std::vector<SweepScene> scenes;
+  int width = 64, height = 64;
+  std::vector<std::pair<std::string, std::vector<nlohmann::json>>> grid;  // in file order
+  ref::HwParams base;
+  bool rtl = true;
+  int rtl_width = 32, rtl_height = 32;
+  // Verilate configurations the rpu executable does not contain (RPU_COSIM_ONLY build under
+  // DIR/rtl_build, one cosim_<id> per configuration, kept across runs).
+  bool rtl_build = false;
+  bool yosys = false;
+  std::string yosys_module = "rpu_ip_step";
+  int yosys_timeout = 3600;
+  // "scale": "ip_candidates" — the module is rpu_candidate and the row's resources are its
+  // counts times the candidate evaluators of the configuration's K-step process
+  // (K·(2^n1 − 1) + 2 unrolled, 2^n1 + 1 iterative): the dominant cost, synthesised once per
+  // width set instead of the whole IP (hours per configuration).
+  bool scale_ip_candidates = false;
+};
+
+// Reads (rpu::read_input_file, "sweep file") and checks the sweep file. Reads no scene.
+SweepSpec parse_sweep_file(const std::string& path);
+
+// The scenes' contents: each file read with rpu::read_input_file ("scene file"), a built-in's
+// embedded text; then parsed, so a bad scene is refused before any configuration runs.
+struct LoadedScenes {
+  std::vector<scene::Scene> scenes;  // as in SweepSpec::scenes
+  std::string fingerprint;           // a hash of every label and content
+};
+LoadedScenes load_sweep_scenes(const SweepSpec& s);
+
+// What a stored result must match to be reused: the scenes' labels and contents, the
+// resolutions and the measurements switched on.
+std::string sweep_fingerprint(const SweepSpec& s, const LoadedScenes& scenes);
+
+struct SweepConfig {
+  std::string id;  // a hash of params_json
+  ref::HwParams params;
+  nlohmann::json params_json;
+};
+
+// The grid's configurations in order (the first grid key varies fastest). parse_sweep_file has
+// bounded their number and refused repeated values, so every id is distinct.
+std::vector<SweepConfig> expand_grid(const SweepSpec& s);
+
+// FNV-1a 64 of the bytes, as 16 hex digits.
+std::string hash_hex(const std::string& bytes);
+
+// JSON text that never throws on strings that are not UTF-8 (paths from the file system):
+// invalid bytes become U+FFFD.
+std::string dump_json(const nlohmann::json& j, int indent = -1);
+
+}  // namespace rpu::app
