@@ -38,6 +38,9 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   for (const std::string& b : backend_names()) {
     if (b == "rtl" && o.skip_rtl) continue;
     BackendResult r = run_backend(b, sc, o.backends);
+    // The model's own precision warning (ref::Precision), once, even with -q.
+    if (b == "ref" && !r.precision_warning.empty())
+      std::cerr << "rpu: warning: " << r.precision_warning << "\n";
     if (!o.quiet)
       std::cerr << fmt::format("  {:<8} {:>8.3f} s  {} hit pixels, {} pairs\n", b,
                                r.render.seconds, r.render.frame.hit_pixels(), r.pairs);

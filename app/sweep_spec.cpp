@@ -12,6 +12,7 @@
 #include "backends.h"
 #include "builtin_scenes.h"
 #include "common/error.h"
+#include "common/json_input.h"
 #include "common/input_file.h"
 #include "common/limits.h"
 #include "scene/scene_json.h"
@@ -28,88 +29,11 @@ std::string at(const std::string& file, const std::string& json_path) {
   return json_path.empty() ? file : file + ": " + json_path;
 }
 
-// What a JSON value is, for "got ..." in messages.
-std::string describe(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return j.get<bool>() ? "true" : "false";
-    case json::value_t::string: return "a string";
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "an array";
-    default: return j.dump();  // a number: its text
-  }
-}
+using json_input::describe;
 
-// Tracks the JSON path of the value being parsed, so that a duplicate key, which nlohmann's
-// parser would silently resolve (the last one wins), is refused naming its path.
-class ParsePath {
- public:
-  explicit ParsePath(std::string file) : file_(std::move(file)) {}
-
-  bool on_event(json::parse_event_t event, const json& parsed) {
-    using E = json::parse_event_t;
-    switch (event) {
-      case E::object_start:
-      case E::array_start: stack_.push_back({event == E::array_start, 0, "", {}}); break;
-      case E::object_end:
-      case E::array_end:
-        stack_.pop_back();
-        element_done();
-        break;
-      case E::key: {
-        Frame& f = stack_.back();
-        f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second)
-          throw Error(at(file_, path()), fmt::format("duplicate key \"{}\" (each key may appear "
-                                                     "once)", f.key));
-        break;
-      }
-      case E::value: element_done(); break;
-    }
-    return true;
-  }
-
-  // The path of the value being read ("grid.n[2]").
-  std::string path() const {
-    std::string p;
-    for (const Frame& f : stack_) {
-      if (f.array) p += fmt::format("[{}]", f.next_index);
-      else if (!f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
-    }
-    return p;
-  }
-
- private:
-  struct Frame {
-    bool array = false;
-    size_t next_index = 0;  // arrays: the element being read
-    std::string key;        // objects: the last key read
-    std::set<std::string> keys;
-  };
-  void element_done() {
-    if (!stack_.empty() && stack_.back().array) ++stack_.back().next_index;
-  }
-  std::string file_;
-  std::vector<Frame> stack_;
-};
-
+// The sweep file's document: linear-time, duplicate keys and syntax errors named (json_input).
 json parse_json(const std::string& text, const std::string& file) {
-  ParsePath path(file);
-  try {
-    return json::parse(text, [&](int, json::parse_event_t event, json& parsed) {
-      return path.on_event(event, parsed);
-    });
-  } catch (const json::parse_error& e) {
-    // nlohmann's text is "[json.exception.parse_error.N] parse error at line L, column C: ...";
-    // keep "line L, column C: ..." only.
-    const std::string what = e.what();
-    const size_t line = what.find("line ");
-    throw Error(file, "not valid JSON: " + (line == std::string::npos ? std::string("syntax error")
-                                                                        : what.substr(line)));
-  } catch (const json::exception&) {
-    // A number too large for a double (1e999) and the like.
-    throw Error(at(file, path.path()), "not a valid JSON value (a number out of range?)");
-  }
+  return json_input::parse(text, file, "the file is empty; expected a JSON object with 'scenes'");
 }
 
 // Refuses keys of `object` (at json_path in file) outside `allowed`.

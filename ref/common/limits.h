@@ -24,9 +24,10 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{64} << 20;
 // double) long before the image could show anything. Every demo scene stays below 1e4.
 inline constexpr double kMaxCoordinate = 1e9;
 
-// Deepest nesting of arrays and objects in a scene file (the schema needs 4); deeper input is
-// refused before it is built, so a file of a million '[' cannot exhaust the stack or memory.
-inline constexpr int kMaxSceneJsonDepth = 64;
+// Deepest nesting of arrays and objects in a scene or sweep file (their schemas need 4); deeper
+// input is refused before it is built, so a file of a million '[' cannot exhaust the stack or
+// memory.
+inline constexpr int kMaxJsonDepth = 64;
 
 // Largest sweep grid (configurations after expansion) and largest worker count.
 inline constexpr long long kMaxSweepConfigurations = 10000;

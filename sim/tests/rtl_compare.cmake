@@ -32,6 +32,19 @@ add_test(NAME rtl_compare_airfield_full COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_
          -DEXPECT_RC=0 "-DEXPECT_ERR=PASS: report" -P ${RPU_RUN})
 list(APPEND rtl_tests rtl_compare_airfield_full)
 
+# Issue 11, items 9 and 10 through the RTL: a camera 5,000 units from the curve (the model keeps
+# its hits and warns, naming the widths) and curves exactly on the centre pixel edges.
+add_test(NAME rtl_compare_far_camera COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;${PROJECT_SOURCE_DIR}/tests/scenes/far_camera.json;--out;${RPU_CMP_OUT}/far_camera"
+         -DEXPECT_RC=0
+         "-DEXPECT_ERR=rpu: warning: [^\n]*far_camera.json: a pixel spans only [0-9]+ position LSBs[^\n]*raise --coord-w 29 and --dir-frac 29;PASS: report"
+         -P ${RPU_RUN})
+add_test(NAME rtl_compare_pixel_edge COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;${PROJECT_SOURCE_DIR}/tests/scenes/pixel_edge.json;--out;${RPU_CMP_OUT}/pixel_edge"
+         -DEXPECT_RC=0 "-DEXPECT_ERR=rtl vs ref 0 px, ref vs float-ip 0 px;PASS: report" -DNOT_ERR=warning
+         -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_compare_far_camera rtl_compare_pixel_edge)
+
 # The main job's command at a small size: every scene compared concurrently, the index written.
 add_test(NAME rtl_demo COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
          "-DARGS=demo;--max-side;40;--out;${RPU_CMP_OUT}/demo"
