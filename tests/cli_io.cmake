@@ -110,6 +110,8 @@ elseif(MODE STREQUAL "outputs")
   file(CREATE_LINK /dev/full ${OUT}/full.png SYMBOLIC)
   run("-o directory" 1 "d.png: is a directory" -- ${RPU} render builtin:curve12 -o ${OUT}/d.png)
   run("-o symlink to /dev/full" 1 "full.png: is not a regular file" -- ${RPU} render builtin:curve12 -o ${OUT}/full.png)
+  # The device itself: named as a device, not as an unknown image format.
+  run("-o /dev/full" 1 "/dev/full: is not a regular file" -- ${RPU} render builtin:curve12 -o /dev/full)
   file(MAKE_DIRECTORY ${OUT}/limited)
   foreach(ext png exr ppm)
     run("file-size limit .${ext}" 1 "x.${ext}: cannot write the file: File too large"

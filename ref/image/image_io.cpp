@@ -37,8 +37,9 @@ std::string one_line(std::string text) {
 }  // namespace
 
 void check_writable(const std::string& path) {
-  create_output(path);
+  // Where first (a device or directory says so), then the format (the file name's extension).
   check_output_path(path, "image");
+  create_output(path);
 }
 
 void write_image_file(const std::string& path, const OIIO::ImageSpec& spec,
