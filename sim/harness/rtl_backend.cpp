@@ -1,6 +1,7 @@
 #include "rtl_backend.h"
 
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -89,7 +90,18 @@ std::string describe_rtl_configs() {
 RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
                      const RtlOptions& o) {
   // Where the waveform goes is checked before the co-simulation, not after it.
-  if (o.trace_pixel) check_output_path(o.trace_path, "waveform");
+  if (o.trace_pixel) {
+    check_output_path(o.trace_path, "waveform");
+    // Verilator's FST writer maps its temporary hierarchy file into memory: past a file-size
+    // limit the process would die of SIGBUS instead of reporting a failed write.
+    struct rlimit fsize {};
+    if (::getrlimit(RLIMIT_FSIZE, &fsize) == 0 && fsize.rlim_cur != RLIM_INFINITY)
+      throw Error("--trace-pixel",
+                  fmt::format("waveforms need an unlimited file size, but it is limited to {} "
+                              "bytes (ulimit -f): Verilator's FST writer maps its files into "
+                              "memory and cannot report a write past the limit",
+                              static_cast<unsigned long long>(fsize.rlim_cur)));
+  }
   const FrameSchedule f = schedule_frame(sc, m, o.ref);
   Scoreboard sb(f, m, o.max_reports);
   RtlRender out;
