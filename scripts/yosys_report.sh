@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Resource and logic-depth report of the RTL modules: Yosys `synth_xilinx` (7-series, flattened,
 # no I/O or clock buffers) of each module at its default parameters (or the configuration named
-# in the table below), the cell counts from `stat`, and the longest combinational path from `ltp`
-# on the mapped netlist. Needs only bash, coreutils, awk, sed, grep and Yosys (Debian's 0.23).
+# in the table below), the cell counts from `stat`, the longest combinational path from `ltp`
+# on the mapped netlist and Yosys' static timing estimate from `sta`. Needs only bash, coreutils,
+# awk, sed, grep and Yosys (Debian's 0.23).
 #
 # Usage: scripts/yosys_report.sh [options] [module[:reduced] ...]
 #   (no modules)        every module of the table, smallest first; missing rtl files are skipped
@@ -20,7 +21,8 @@
 #   -P DIR              no synthesis: tabulate again the files an earlier run kept in DIR (-k)
 #   -H                  hierarchical: synth_xilinx without -flatten, each distinct submodule
 #                       synthesised once, totals from `stat -top` (the design hierarchy's counts
-#                       times the instances); no cross-module optimisation and no longest path.
+#                       times the instances); no cross-module optimisation, no longest path
+#                       and no sta.
 #                       Makes rpu_ip and rpu_top at the defaults (26 candidate evaluators)
 #                       feasible in minutes instead of hours
 #   -h                  this help
@@ -40,6 +42,13 @@
 # the paths into that operand and starts the paths through its multiplier
 # (scripts/yosys/ltp_cells.v). It is a logic-depth measure, not a timing analysis: a CARRY4 is
 # 4 carry bits and much faster than a LUT level, a DSP much slower.
+# sta ns: Yosys' static timing estimate, `sta` on the mapped netlist after reading the Xilinx
+# cell library with its specify blocks (`read_verilog -lib -specify -overwrite
+# +/xilinx/cells_sim.v`; without them CARRY4 has no timing arcs and the figure is far too low):
+# the latest arrival time at a register input or output port, in ns, from the launching cell's
+# clock-to-out (FF 0.30, SRL 1.47, DSP/BRAM more) through the cells' delays. Cell delays only:
+# no routing, no setup time, no clock skew (placed and routed, the same path is slower).
+# Input ports arrive at 0.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -48,7 +57,7 @@ ltp_cells=$root/scripts/yosys/ltp_cells.v
 
 # The report's columns (tabulate writes the values in this order).
 header=(Module Configuration LUT INV FF SRL LUTRAM DSP48E1 BRAM36 CARRY4 MUXF7/8 "Est. LCs"
-        "Longest path (levels)" "Yosys s" "Yosys MB")
+        "Longest path (levels)" "sta ns" "Yosys s" "Yosys MB")
 
 # ---- the module table ----
 # Direct submodules (the script follows them recursively, and also adds any rpu_* instantiated
@@ -235,6 +244,16 @@ tabulate() {
         cnt[k]++
       }
       close(f)
+      # sta: the latest arrival time in ps (clock-to-out of the launching cell plus the cell
+      # delays of the Xilinx specify library, no routing, no setup time).
+      f = work "/" tag ".sta"
+      sta = hier ? "- (per module)" : "?"
+      while ((getline line < f) > 0)
+        if (match(line, /Latest arrival time in .* is -?[0-9]+/)) {
+          n = split(substr(line, RSTART, RLENGTH), a, " ")
+          sta = sprintf("%.2f", a[n] / 1000)
+        }
+      close(f)
       f = work "/" tag ".log"
       mem = "-"
       while ((getline line < f) > 0)
@@ -249,8 +268,8 @@ tabulate() {
       path = len (mix == "" ? "" : " (" mix ")")
       bram = b36 + b18 / 2
       if (lcs == "") lcs = "-"
-      printf "%s\t%s\tok\t%d\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%s\t%s\t%s\t%s", mod, config, lut, inv,
-             ff, srl, lutram, dsp, bram, carry, muxf, lcs, path, secs, mem
+      printf "%s\t%s\tok\t%d\t%d\t%d\t%d\t%d\t%d\t%s\t%d\t%d\t%s\t%s\t%s\t%s\t%s", mod, config, lut, inv,
+             ff, srl, lutram, dsp, bram, carry, muxf, lcs, path, sta, secs, mem
       printf "%s\n", other == "" ? "" : "\t" other
     }' </dev/null >"$work/$tag.row"
 }
@@ -291,7 +310,8 @@ run_one() {
   sel="$sel $mod/t:DSP48E1 r:MREG>0 %i %u $mod/t:DSP48E1 r:PREG>0 %i %u"
   local comb="r:MREG<1 %i r:PREG<1 %i"
   if ((hier)); then
-    # Totals over the hierarchy; no cell lists and no ltp (paths stop at module boundaries).
+    # Totals over the hierarchy; no cell lists, no ltp and no sta (paths stop at module
+    # boundaries).
     cat >"$work/$tag.ys" <<EOF
 read_verilog $flist
 hierarchy -check -top $mod$chparam
@@ -310,6 +330,8 @@ tee -q -o $work/$tag.cells.C select -list $mod/t:CARRY4
 tee -q -o $work/$tag.cells.M select -list $mod/t:MUXF*
 tee -q -o $work/$tag.cells.D select -list $mod/t:DSP48E1
 tee -q -o $work/$tag.cells.R select -list $mod/t:RAM* $mod/t:RAMB* %d
+read_verilog -lib -specify -overwrite +/xilinx/cells_sim.v
+tee -q -o $work/$tag.sta sta
 read_verilog -lib $ltp_cells
 chtype -set RPU_LTP_DSP48E1_AB $mod/t:DSP48E1 r:AREG>0 %i r:BREG>0 %i $comb
 chtype -set RPU_LTP_DSP48E1_A $mod/t:DSP48E1 r:AREG>0 %i $comb
