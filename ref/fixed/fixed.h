@@ -76,11 +76,13 @@ constexpr i128 round_half_up(i128 v, int bits) {
   return bits > 0 ? (v + (i128{1} << (bits - 1))) >> bits : truncate(v, bits);
 }
 
-// Floor square root of an unsigned integer of at most `width` bits (1 ≤ width ≤ 126): the
-// hardware's digit-by-digit square root, two radicand bits per stage, ceil(width/2) stages,
-// each a compare and a subtract (isqrt_digits is that recurrence, literally). floor(√x) is a
-// unique integer, so `isqrt` may reach it faster: below 2^64 it refines a first guess with
-// exact integer comparisons (r² ≤ x < (r+1)²). Both are tested equal (tests/test_fixed.cpp).
+// Floor square root of an unsigned integer of at most `width` bits (1 ≤ width ≤ 126). The
+// hardware (rtl/rpu_sqrt) takes two radicand bits per stage, ceil(width/2) stages, each one
+// add or subtract chosen by the sign of the partial remainder (non-restoring); it produces the
+// same root digits as the restoring compare-and-subtract recurrence that isqrt_digits writes
+// out literally. floor(√x) is a unique integer, so `isqrt` may reach it faster: below 2^64 it
+// refines a first guess with exact integer comparisons (r² ≤ x < (r+1)²). Both are tested
+// equal (tests/test_fixed.cpp), and the RTL against them (sim/tests/rpu_sqrt.cmake).
 u128 isqrt(u128 x, int width);
 u128 isqrt_digits(u128 x, int width);
 
