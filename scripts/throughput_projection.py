@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Throughput projection of the RPU (docs/throughput.md): frames per second of each demo scene at
+1920x1080 on a few FPGA parts, from measured inputs. A PROJECTION: the clock is Yosys' static
+timing estimate of cell delays (no placement, no routing), the area a synthesis estimate.
+
+Every input below names where it was measured; rerun after a change of the design and paste the
+output into docs/throughput.md:
+
+    python3 scripts/throughput_projection.py > /tmp/t.md
+"""
+
+import math
+
+# Work items (ray/segment pairs) per 1920x1080 frame: `rpu render builtin:S --backend ref
+# --size 1920x1080` ("ray/segment pairs"); equal to the co-simulation's item count (curve12 at
+# 256x256: 205,824 both).
+PAIRS_1080P = {
+    "curve12": 7_539_776,
+    "ellipse6": 3_058_729,
+    "polyline9": 2_843_580,
+    "airfield": 580_678,
+}
+
+# Slowest register-to-register path of the modules in each form, Yosys `sta` with the -specify
+# cell library (docs/resources.md): unrolled = rpu_ip_step (14.67 ns) is the slowest unit of the
+# unrolled top; iterative = rpu_ip Unrolled=0 (16.54 ns). Rule of thumb from issue 10: 3.0 ns of
+# cell delay is about 200 MHz after routing, i.e. routing adds about 2/3.
+ROUTING_FACTOR = 5.0 / 3.0
+
+# One unit of each form at the defaults (n = 16, n1 = 2, coord_w 24): LUT sites = logic LUT +
+# INV + SRL + LUTRAM; items per cycle measured by the co-simulation (docs/cosim.md, docs/rtl.md).
+FORMS = {
+    "unrolled": {
+        # Hierarchical synthesis of rpu_top (docs/resources.md) minus the non-restoring square
+        # root's saving estimated from per-module counts (82 roots; within 3 % on five modules),
+        # plus the sphere unit's cross product (+26 DSP). An estimate, not a whole-top synthesis.
+        "lut_sites": 228_600, "ff": 196_700, "dsp": 2_572, "bram36": 70,
+        "items_per_cycle": 1.0, "sta_ns": 14.67, "source": "estimate",
+    },
+    "iterative": {
+        # Hierarchical synthesis of rpu_top Unrolled=0 at the defaults (docs/resources.md).
+        # 47,889 LUT + 2,865 INV + 29,011 SRL + 40,832 LUTRAM.
+        "lut_sites": 120_597, "ff": 54_335, "dsp": 773, "bram36": 70,
+        "items_per_cycle": 0.124, "sta_ns": 16.54, "source": "synthesis",
+    },
+}
+
+# Device capacities (AMD/Xilinx data sheets DS180 for 7-series, DS890 for UltraScale).
+PARTS = [
+    ("XC7A35T", 20_800, 41_600, 90, 50),
+    ("XC7A100T", 63_400, 126_800, 240, 135),
+    ("XC7A200T", 133_800, 269_200, 740, 365),
+    ("XCKU040", 242_400, 484_800, 1_920, 600),
+    ("XC7VX690T", 433_200, 866_400, 3_600, 1_470),
+]
+
+
+def units_per_part(form, part):
+    _, lut, ff, dsp, bram = part
+    limits = [lut / form["lut_sites"], ff / form["ff"]]
+    if form["dsp"]:
+        limits.append(dsp / form["dsp"])
+    if form["bram36"]:
+        limits.append(bram / form["bram36"])
+    return math.floor(min(limits))
+
+
+def main():
+    print("| form | source | LUT sites | FF | DSP48E1 | BRAM36 | items/cycle | sta ns | "
+          "clock, cells only | clock, routed (×5/3) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for name, f in FORMS.items():
+        if f["lut_sites"] is None:
+            continue
+        fmax = 1e3 / f["sta_ns"]
+        print(f"| {name} | {f['source']} | {f['lut_sites']:,} | {f['ff']:,} | {f['dsp']:,} | "
+              f"{f['bram36']} | {f['items_per_cycle']} | {f['sta_ns']} | {fmax:.0f} MHz | "
+              f"{fmax / ROUTING_FACTOR:.0f} MHz |")
+    print()
+    print("Units per part (the scarcest resource decides):")
+    print()
+    print("| part | LUT | FF | DSP48E1 | BRAM36 | " +
+          " | ".join(f"{n} units" for n, f in FORMS.items() if f["lut_sites"]) + " |")
+    print("|---|---|---|---|---|" + "---|" * sum(1 for f in FORMS.values() if f["lut_sites"]))
+    for part in PARTS:
+        cells = [str(units_per_part(f, part)) for f in FORMS.values() if f["lut_sites"]]
+        print(f"| {part[0]} | {part[1]:,} | {part[2]:,} | {part[3]:,} | {part[4]:,} | " +
+              " | ".join(cells) + " |")
+    print()
+    print("Frames per second at 1920×1080 (routed clock, all units of the part working on one "
+          "frame; 0 where no unit fits):")
+    print()
+    header = "| scene | pairs per frame | " + " | ".join(
+        f"{p[0]} {n}" for n, f in FORMS.items() if f["lut_sites"] for p in PARTS) + " |"
+    print(header)
+    print("|---|---|" + "---|" * (header.count("|") - 3))
+    for scene, pairs in PAIRS_1080P.items():
+        cells = []
+        for f in FORMS.values():
+            if not f["lut_sites"]:
+                continue
+            rate = 1e9 / (f["sta_ns"] * ROUTING_FACTOR) * f["items_per_cycle"]  # items/s
+            for part in PARTS:
+                u = units_per_part(f, part)
+                cells.append(f"{u * rate / pairs:.1f}" if u else "0")
+        print(f"| {scene} | {pairs:,} | " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    main()
