@@ -519,7 +519,9 @@ TEST(CaptureUnit, CurveOnAPixelEdgeFollowsTheLeftTopRule) {
         for (int i = 0; i < 16; ++i) {
           const bool hit = ip.primitive[ip.index(i, j)] != image::kBackground;
           // Every hit is in column 8 (vertical) or row 8 (horizontal): right of / below the edge.
-          if (hit) EXPECT_EQ(vertical ? i : j, 8) << s.source << " offset " << off;
+          if (hit) {
+            EXPECT_EQ(vertical ? i : j, 8) << s.source << " offset " << off;
+          }
           EXPECT_EQ(ref.primitive[ref.index(i, j)] != image::kBackground, hit) << s.source << " offset " << off << " pixel " << i
                                              << "," << j;
         }

@@ -1,0 +1,29 @@
+// Twin of rtl/rpu_candidate.v | sim/tb/tb_rpu_candidate.cpp | sim/tests/rpu_candidate.cmake
+#include "model/rpu_candidate.h"
+
+#include "model/rpu_curve_point.h"
+#include "model/rpu_guide.h"
+#include "model/rpu_sqrt.h"
+
+namespace rpu::ref {
+
+using fixed::truncate;
+
+Candidate candidate_evaluator(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                              std::uint64_t m, Overflow& ovf) {
+  Candidate c;
+  const i128 mm = static_cast<i128>(m);
+  c.pr = si.A + scale_truncate(si.AB, mm, p.n);                            // pr(τ), LSB
+  c.t = fixed::saturate(si.alpha + truncate(si.beta * mm, p.n), p.t_w(), ovf);  // t(τ), Q(3.FT)
+  const i128 w = guide_weight(p, c.t);
+  const i128 g1 = guide_unit(p, s.guide[0], s.L2, w, ovf);
+  const i128 g2 = guide_unit(p, s.guide[1], s.L2, w, ovf);
+  c.X = curve_point_unit(p, s, c.t, g1, g2);
+  const WVec3 diff = c.pr - c.X;
+  const i128 md2 = dot(diff, diff);
+  c.md = p.metric == Metric::kAbs ? sqrt_unit(md2, p.dist_radicand_w(), p.sqrt_w, ovf)
+                                  : fixed::saturate_unsigned(md2, p.dist_radicand_w(), ovf);
+  return c;
+}
+
+}  // namespace rpu::ref

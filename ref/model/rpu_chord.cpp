@@ -1,0 +1,13 @@
+// Twin of rtl/rpu_chord.v | sim/tb/tb_rpu_chord.cpp | sim/tests/rpu_sphere.cmake
+#include "model/rpu_chord.h"
+
+namespace rpu::ref {
+
+using fixed::truncate;
+
+i128 chord_parameter(const HwParams& p, const SegmentDesc& s, i128 dot_value, Overflow& ovf) {
+  const i128 t = truncate(dot_value * s.inv_m, s.inv_s - p.t_frac);
+  return fixed::saturate(t, p.t_w(), ovf);
+}
+
+}  // namespace rpu::ref

@@ -1,0 +1,13 @@
+// Twin of rtl/rpu_chord.v | sim/tb/tb_rpu_chord.cpp | sim/tests/rpu_sphere.cmake
+// Chord parameter t of a point (used by rtl/rpu_sphere and rtl/rpu_texture).
+#pragma once
+
+#include "model/datapath.h"
+
+namespace rpu::ref {
+
+// t = floor(dot · inv_m · 2^-(inv_s - FT)), saturated to Q(3.FT), for dot = (x - p1)·d (LSB²);
+// inv_s < FT (segments with L² < 2^(FT-IW+3)) makes it an exact left shift.
+i128 chord_parameter(const HwParams& p, const SegmentDesc& s, i128 dot, Overflow& ovf);
+
+}  // namespace rpu::ref

@@ -1,0 +1,18 @@
+// Twin of rtl/rpu_curve_point.v | sim/tb/tb_rpu_curve_point.cpp | sim/tests/rpu_curve_point.cmake
+#include "model/rpu_curve_point.h"
+
+namespace rpu::ref {
+
+using fixed::truncate;
+
+WVec3 curve_point_unit(const HwParams& p, const SegmentDesc& s, i128 t, i128 g1, i128 g2) {
+  const i128 one = i128{1} << p.t_frac;
+  // s(t) = p(t) + u_1·g_1·(1-t) + u_2·g_2·t  (seed 000 eq. 23 with the closed-form guides).
+  const WVec3 pt = widen(s.p1) + scale_truncate(widen(s.d), t, p.t_frac);
+  const i128 G1 = truncate(g1 * (one - t), p.t_frac);
+  const i128 G2 = truncate(g2 * t, p.t_frac);
+  return pt + scale_truncate(widen(s.guide[0].u), G1, p.unit_frac) +
+         scale_truncate(widen(s.guide[1].u), G2, p.unit_frac);
+}
+
+}  // namespace rpu::ref

@@ -1,0 +1,11 @@
+// Twin of rtl/rpu_curve_point.v | sim/tb/tb_rpu_curve_point.cpp | sim/tests/rpu_curve_point.cmake
+// Curve point s(t) from the two guides.
+#pragma once
+
+#include "model/datapath.h"
+
+namespace rpu::ref {
+
+WVec3 curve_point_unit(const HwParams& p, const SegmentDesc& s, i128 t, i128 g1, i128 g2);
+
+}  // namespace rpu::ref

@@ -1,0 +1,37 @@
+// Twin of rtl/rpu_ray_gen.v | sim/tb/tb_rpu_ray_gen.cpp | sim/tests/rpu_ray_gen.cmake
+#include "model/rpu_ray_gen.h"
+
+#include "model/rpu_sqrt.h"
+
+namespace rpu::ref {
+
+using fixed::truncate;
+using fixed::u128;
+
+RayGenOut ray_generator(const HwParams& p, const CameraDesc& cam, int i, int j) {
+  RayGenOut r;
+  // v = v0 + i·dx + j·dy exactly in Q(4.FV+14) (the compiler checked the image corners fit),
+  // then the guard bits dropped: Q(4.FV).
+  const WVec3 vg = widen(cam.v0) + scale_truncate(widen(cam.dx), i, 0) +
+                   scale_truncate(widen(cam.dy), j, 0);
+  const WVec3 v = {truncate(vg.x, HwParams::kRayGuard), truncate(vg.y, HwParams::kRayGuard),
+                   truncate(vg.z, HwParams::kRayGuard)};
+  r.v = {static_cast<i64>(v.x), static_cast<i64>(v.y), static_cast<i64>(v.z)};
+  // |v| = floor(sqrt(v·v)), Q(.FV); 1/|v| = floor(2^(2FV+2) / |v|), Q(.FV+2); v̂ = v·(1/|v|).
+  Overflow unused;
+  const int vv_w = 2 * p.dir_w() + 4;
+  const i128 len = sqrt_unit(dot(v, v), vv_w, 0, unused);
+  const i128 recip = static_cast<i128>(
+      fixed::udiv(u128{1} << (2 * p.dir_frac + 2), static_cast<u128>(len), p.dir_frac + 3));
+  const WVec3 vh = scale_truncate(v, recip, p.dir_frac + 2);
+  r.vhat = {static_cast<i64>(vh.x), static_cast<i64>(vh.y), static_cast<i64>(vh.z)};
+  // Edge vectors, linear in i and j: E_left(i) = el0 - i·σW, E_top(j) = et0 - j·σW.
+  const WVec3 el0 = widen(cam.el0), et0 = widen(cam.et0), sw = widen(cam.sw);
+  r.e_left = el0 - scale_truncate(sw, i, 0);
+  r.e_right = el0 - scale_truncate(sw, i + 1, 0);
+  r.e_top = et0 - scale_truncate(sw, j, 0);
+  r.e_bottom = et0 - scale_truncate(sw, j + 1, 0);
+  return r;
+}
+
+}  // namespace rpu::ref

@@ -1,0 +1,17 @@
+// Twin of rtl/rpu_ray_gen.v | sim/tb/tb_rpu_ray_gen.cpp | sim/tests/rpu_ray_gen.cmake
+// Ray generator.
+#pragma once
+
+#include "model/datapath.h"
+
+namespace rpu::ref {
+
+struct RayGenOut {
+  IVec3 v;                // unnormalised direction of the pixel centre, Q(4.FV)
+  IVec3 vhat;             // v / |v|, Q(2.FV)
+  WVec3 e_left, e_right;  // PVP edge vectors E_left(i), E_left(i+1), Q(4.FE+14)
+  WVec3 e_top, e_bottom;  // E_top(j), E_top(j+1), Q(4.FE+14)
+};
+RayGenOut ray_generator(const HwParams& p, const CameraDesc& cam, int i, int j);
+
+}  // namespace rpu::ref

@@ -1,0 +1,17 @@
+// Twin of rtl/rpu_texture.v | sim/tb/tb_rpu_texture.cpp | sim/tests/rpu_texture.cmake
+// Texture predicates pr1, pr2, pr3.
+#pragma once
+
+#include "model/datapath.h"
+
+namespace rpu::ref {
+
+struct TextureOut {
+  bool pr1 = false, pr2 = false, pr3 = false;
+  bool covers = false;  // pr1 ∧ (pr2 ∨ pr3)
+  i128 t = 0;
+  WVec3 X;
+};
+TextureOut texture_unit(const HwParams& p, const SegmentDesc& s, const WVec3& p0, Overflow& ovf);
+
+}  // namespace rpu::ref
