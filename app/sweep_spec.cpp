@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -38,7 +39,7 @@ json parse_json(const std::string& text, const std::string& file) {
 
 // Refuses keys of `object` (at json_path in file) outside `allowed`.
 void allow_keys(const json& object, const std::string& file, const std::string& json_path,
-                std::initializer_list<std::string_view> allowed) {
+                const std::vector<std::string_view>& allowed) {
   for (const auto& [k, v] : object.items()) {
     if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
     std::string list;
@@ -200,16 +201,29 @@ void read_grid(const json& g, const std::string& file, SweepSpec& s) {
   }
 }
 
+// An optional section that is either a boolean or an object with an optional "enabled" and the
+// keys in `allowed` (rtl, yosys). Sets `enabled`; true when `j` is an object whose other keys the
+// caller reads.
+bool read_section(const json& j, const std::string& file, const std::string& key,
+                  std::initializer_list<std::string_view> allowed, bool& enabled) {
+  const std::string where = at(file, key);
+  if (j.is_boolean()) {
+    enabled = j.get<bool>();
+    return false;
+  }
+  std::string keys = "\"enabled\"";
+  for (std::string_view a : allowed) keys += fmt::format(", \"{}\"", a);
+  if (!j.is_object()) throw Error(where, "must be true, false or {" + keys + "}");
+  std::vector<std::string_view> all = {"enabled"};
+  all.insert(all.end(), allowed.begin(), allowed.end());
+  allow_keys(j, file, key, all);
+  enabled = j.contains("enabled") ? read_bool(j["enabled"], where + ".enabled") : true;
+  return true;
+}
+
 void read_rtl(const json& r, const std::string& file, SweepSpec& s) {
   const std::string where = at(file, "rtl");
-  if (r.is_boolean()) {
-    s.rtl = r.get<bool>();
-    return;
-  }
-  if (!r.is_object())
-    throw Error(where, "must be true, false or {\"enabled\", \"resolution\", \"build\"}");
-  allow_keys(r, file, "rtl", {"enabled", "resolution", "build"});
-  s.rtl = r.contains("enabled") ? read_bool(r["enabled"], where + ".enabled") : true;
+  if (!read_section(r, file, "rtl", {"resolution", "build"}, s.rtl)) return;
   if (r.contains("build")) s.rtl_build = read_bool(r["build"], where + ".build");
   if (r.contains("resolution"))
     std::tie(s.rtl_width, s.rtl_height) = read_size(r["resolution"], where + ".resolution");
@@ -217,14 +231,7 @@ void read_rtl(const json& r, const std::string& file, SweepSpec& s) {
 
 void read_yosys(const json& y, const std::string& file, SweepSpec& s) {
   const std::string where = at(file, "yosys");
-  if (y.is_boolean()) {
-    s.yosys = y.get<bool>();
-    return;
-  }
-  if (!y.is_object())
-    throw Error(where, "must be true, false or {\"enabled\", \"module\", \"timeout\", \"scale\"}");
-  allow_keys(y, file, "yosys", {"enabled", "module", "timeout", "scale"});
-  s.yosys = y.contains("enabled") ? read_bool(y["enabled"], where + ".enabled") : true;
+  if (!read_section(y, file, "yosys", {"module", "timeout", "scale"}, s.yosys)) return;
   if (y.contains("module")) {
     if (!y["module"].is_string())
       throw Error(where + ".module", "must be a string, got " + describe(y["module"]));
