@@ -37,14 +37,17 @@ struct Bounds {
   }
 };
 
+[[noreturn]] void fov_too_wide(const std::string& source, double reach, double limit) {
+  throw Error(source + ": camera.fov_deg",
+              fmt::format("field of view too wide for the ray generator's direction format (a "
+                          "pixel direction component reaches {:.3g}; limit {})", reach, limit));
+}
+
 void check_dir(const IVec3& v, int frac, int int_bits, const std::string& source) {
   const i64 limit = i64{1} << (frac + int_bits - 1);
   for (i64 c : {v.x, v.y, v.z})
     if (c >= limit || c <= -limit)
-      throw Error(source + ": camera.fov_deg",
-                  fmt::format("field of view too wide for the ray generator's direction format "
-                              "(a pixel direction component reaches {:.3g}; limit {})",
-                              std::ldexp(static_cast<double>(c), -frac), 1 << (int_bits - 1)));
+      fov_too_wide(source, std::ldexp(static_cast<double>(c), -frac), 1 << (int_bits - 1));
 }
 
 SegmentDesc quantize_segment(const scene::CompiledSegment& cs, const Normalization& norm,
@@ -180,10 +183,7 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
   const double reach_x = cam.half, reach_y = cam.half * cam.height / cam.width;
   const double dir_limit = 1 << (HwParams::kDirInt - 1);
   if (!(reach_x < dir_limit && reach_y < dir_limit))
-    throw Error(sc.source + ": camera.fov_deg",
-                fmt::format("field of view too wide for the ray generator's direction format (a "
-                            "pixel direction component reaches {:.3g}; limit {})",
-                            std::max(reach_x, reach_y), dir_limit));
+    fov_too_wide(sc.source, std::max(reach_x, reach_y), dir_limit);
   CameraDesc& c = m.camera;
   c.width = cam.width;
   c.height = cam.height;
