@@ -21,7 +21,7 @@
 
 #include "common/error.h"
 #include "image/image_io.h"
-#include "image/output_file.h"
+#include "common/output_file.h"
 #include "report_text.h"
 
 namespace rpu::app {

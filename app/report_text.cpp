@@ -1,6 +1,6 @@
 #include "report_text.h"
 
-#include "image/output_file.h"
+#include "common/output_file.h"
 
 namespace rpu::app {
 

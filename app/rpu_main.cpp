@@ -20,7 +20,7 @@
 #include "demo.h"
 #include "sweep.h"
 #include "image/image_io.h"
-#include "image/output_file.h"
+#include "common/output_file.h"
 #include "model/ref_renderer.h"
 #include "scene/compiled_scene.h"
 #include "tracer/float_tracer.h"

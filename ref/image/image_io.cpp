@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "common/error.h"
-#include "image/output_file.h"
+#include "common/output_file.h"
 
 namespace rpu::image {
 namespace {

@@ -18,13 +18,13 @@ void write_rgb(const std::string& path, int width, int height, const std::vector
 // Writes an image of `spec` (its size, channels and file pixel format) from `data` (pixels of
 // `data_type`, converted by OpenImageIO) to `path`, the format following the extension. The file
 // is encoded in memory and written through a temporary beside `path` and a rename, every write
-// and the close checked (output_file.h): a full disk or a file-size limit throws rpu::Error
+// and the close checked (common/output_file.h): a full disk or a file-size limit throws rpu::Error
 // naming the file and leaves neither a partial file nor a temporary behind.
 void write_image_file(const std::string& path, const OIIO::ImageSpec& spec,
                       OIIO::TypeDesc data_type, const void* data);
 
 // Checks, before any work is done, that `path` has a format OpenImageIO can write and can become
-// a regular file (output_file.h: its directory exists and is writable; not a directory, device
+// a regular file (common/output_file.h: its directory exists and is writable; not a directory, device
 // or FIFO). Throws rpu::Error naming the file.
 void check_writable(const std::string& path);
 

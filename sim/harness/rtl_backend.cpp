@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
-#include "image/output_file.h"
+#include "common/output_file.h"
 #include "stream_file.h"
 #include "top_ports.h"
 
