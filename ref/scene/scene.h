@@ -39,12 +39,28 @@ struct Texture {
   Color color{1.0, 1.0, 1.0};
 };
 
+// A parametric patch of ALGORITHM 4 (seed 003). A `bezier_set` in the file becomes one Patch per
+// member (same colour). Control points are row-major with rows of constant u index: point
+// (iu, iv) is control_points[iu * size_v + iv].
+enum class PatchType { kBezier, kBSpline, kNurbs };
+struct Patch {
+  PatchType type = PatchType::kBezier;
+  int degree_u = 3, degree_v = 3;
+  int size_u = 4, size_v = 4;        // control grid (nu, nv); Bézier: degree + 1
+  std::vector<Vec3> control_points;  // size_u · size_v
+  std::vector<double> knots_u;       // size_u + degree_u + 1 values (empty for Bézier)
+  std::vector<double> knots_v;       // size_v + degree_v + 1 values (empty for Bézier)
+  std::vector<double> weights;       // size_u · size_v, > 0 (NURBS only; empty otherwise)
+  Color color{1.0, 1.0, 1.0};
+};
+
 struct Scene {
   std::string source;  // file name (or "<name>" for embedded scenes), for error messages
   Camera camera;
   Color background{0.0, 0.0, 0.0};
   std::vector<Curve> curves;
   std::vector<Texture> textures;
+  std::vector<Patch> patches;  // ALGORITHM 4; float backend only (no fixed-point path)
 };
 
 // Largest accepted image side and pixel count: bigger requests are refused, not attempted
