@@ -34,9 +34,41 @@ std::string rtl_configurations() {
 #endif
 }
 
+bool backend_applies(const std::string& backend, const scene::CompiledScene& sc) {
+  return sc.patches.empty() || backend == "float" || backend == "float-ip";
+}
+
+nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch::PatchRenderStats& s) {
+  const bool martin = o.method == patch::PatchMethod::kMartin;
+  return {{"method", patch::patch_method_name(o.method)},
+          {"start", o.start == patch::PatchStart::kRandom ? "random" : "map"},
+          {"map_quantised", o.map.quantised},
+          {martin ? "bvh_build_seconds" : "map_seconds", s.map_seconds},
+          {martin ? "trace_seconds" : "refine_seconds", s.refine_seconds},
+          {"map_triangles", s.map_triangles},
+          {"bvh_leaves", s.bvh_leaves},
+          {"hit_pixels", s.hit_pixels},
+          {"starts", s.starts},
+          {"converged", s.converged},
+          {"iterations", s.iterations},
+          {"evaluations", s.evaluations},
+          {"silhouette_pixels", s.silhouette_pixels},
+          {"silhouette_left_domain", s.silhouette_left_domain},
+          {"silhouette_stalled", s.silhouette_stalled},
+          {"silhouette_iteration_limit", s.silhouette_iteration_limit},
+          {"silhouette_singular", s.silhouette_singular},
+          {"neighbour_hits", s.neighbour_hits},
+          {"fallback_starts", s.fallback_starts},
+          {"fallback_converged", s.fallback_converged}};
+}
+
 BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
                           const BackendOptions& o) {
   BackendResult r;
+  if (!backend_applies(backend, sc))
+    throw Error(sc.source + ": patches",
+                "the " + backend + " backend has no fixed-point path for parametric patches "
+                "(ALGORITHM 4); render them with --backend float or float-ip");
   r.render.name = backend;
   const auto t0 = std::chrono::steady_clock::now();
   if (backend == "float" || backend == "float-ip") {
@@ -45,6 +77,26 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     tracer::RenderStats stats;
     r.render.frame = tracer::render_float(sc, fo, &stats);
     r.pairs = stats.pairs_tested + stats.texture_pairs_tested;
+    if (!sc.patches.empty()) {
+      // The patch methods are themselves the thesis's iterative processes: float and float-ip
+      // trace patches alike (--patch-method). Nearest hit wins against curves and textures.
+      patch::PatchRenderOptions po = o.patch;
+      po.threads = fo.threads;
+      const std::vector<patch::PatchSurface> surfaces = patch::prepare_surfaces(sc.patches);
+      patch::PatchRender pr = patch::render_patches(surfaces, sc.camera, po);
+      image::Frame& f = r.render.frame;
+      for (int j = 0; j < f.height; ++j)
+        for (int i = 0; i < f.width; ++i) {
+          const patch::PatchPixel& p = pr.hits.at(i, j);
+          const size_t k = f.index(i, j);
+          if (p.hit && (f.primitive[k] == image::kBackground || p.depth < f.depth[k])) {
+            f.primitive[k] = sc.first_patch_primitive + p.patch;
+            f.depth[k] = p.depth;
+          }
+        }
+      r.patch = patch_stats_json(po, pr.stats);
+      r.patch_hits = std::move(pr.hits);
+    }
   } else if (backend == "ref") {
     const ref::ModelScene model = ref::quantize_scene(sc, o.hw);
     r.precision_warning = model.precision.warning;

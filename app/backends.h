@@ -12,6 +12,7 @@
 #include "compare_report.h"
 #include "model/hw_params.h"
 #include "model/ref_renderer.h"
+#include "patch/patch_renderer.h"
 #include "scene/compiled_scene.h"
 #include "tracer/float_tracer.h"
 
@@ -21,6 +22,7 @@ struct BackendOptions {
   ref::HwParams hw;                 // the model's and the RTL's parameters
   tracer::FloatOptions fl;          // n, n1, threads, binning, grid of the float tracers
   ref::RefOptions ref;              // threads, binning, grid of the model (and the RTL schedule)
+  patch::PatchRenderOptions patch;  // float, float-ip: method, map of the patches (ALGORITHM 4)
   bool systemc = false;             // rtl: the SystemC harness instead of the C++ one
   bool fault = false;               // rtl: the fault-injected build (checker tests)
   std::optional<std::pair<int, int>> trace_pixel;  // rtl: re-run a pixel with a waveform
@@ -35,6 +37,8 @@ struct BackendResult {
   bool rtl_ok = true;                      // rtl only: equal to the model on every item and pixel
   std::string trace_log;                   // rtl only: what --trace-pixel did
   std::string precision_warning;           // ref, rtl: ref::Precision::warning ("" = none)
+  patch::PatchHitMap patch_hits;           // float, float-ip with patches: per-pixel patch hits
+  nlohmann::json patch;                    // float, float-ip with patches: method, times, counts
 };
 
 inline const std::vector<std::string>& backend_names() {
@@ -51,7 +55,15 @@ bool rtl_built();
 // The Verilated configurations this program contains, one per line.
 std::string rtl_configurations();
 
-// Renders with one backend; throws rpu::Error for an unknown backend or one not built in.
+// True when the backend can render the scene: ref and rtl have no path for patches.
+bool backend_applies(const std::string& backend, const scene::CompiledScene& sc);
+
+// The patch rendering's statistics as JSON (method, map/refine seconds, starts, silhouette
+// pixels by reason, ...).
+nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch::PatchRenderStats& s);
+
+// Renders with one backend; throws rpu::Error for an unknown backend or one not built in, and
+// for ref and rtl on a scene with patches.
 BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
                           const BackendOptions& o);
 

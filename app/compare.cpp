@@ -35,9 +35,16 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   in.background = sc.background;
   in.config = config_json(o.backends);
   bool rtl_ok = false, rtl_ran = false;
+  nlohmann::json not_applicable = nlohmann::json::array(), patch_stats;
   for (const std::string& b : backend_names()) {
+    if (!backend_applies(b, sc)) {  // patches: no fixed-point path (ALGORITHM 4)
+      not_applicable.push_back(b);
+      if (!o.quiet) std::cerr << fmt::format("  {:<8} not applicable (patches: float only)\n", b);
+      continue;
+    }
     if (b == "rtl" && o.skip_rtl) continue;
     BackendResult r = run_backend(b, sc, o.backends);
+    if (r.patch.is_object()) patch_stats[b] = r.patch;
     // The model's own precision warning (ref::Precision), once, even with -q.
     if (b == "ref" && !r.precision_warning.empty())
       std::cerr << "rpu: warning: " << r.precision_warning << "\n";
@@ -53,6 +60,25 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
     }
     in.renders.push_back(std::move(r.render));
   }
+  if (!sc.patches.empty()) {
+    // The other patch methods, as extra float renders (float-thesis, float-newton,
+    // float-martin): the same scene, the same depth rule, another root finder.
+    for (const patch::PatchMethod m :
+         {patch::PatchMethod::kThesis, patch::PatchMethod::kNewton, patch::PatchMethod::kMartin}) {
+      if (m == o.backends.patch.method) continue;
+      BackendOptions bo = o.backends;
+      bo.patch.method = m;
+      BackendResult r = run_backend("float", sc, bo);
+      r.render.name = std::string("float-") + patch::patch_method_name(m);
+      patch_stats[r.render.name] = r.patch;
+      if (!o.quiet)
+        std::cerr << fmt::format("  {:<8} {:>8.3f} s  {} hit pixels\n", r.render.name,
+                                 r.render.seconds, r.render.frame.hit_pixels());
+      in.renders.push_back(std::move(r.render));
+    }
+    in.extra_metrics["patches"] = patch_stats;
+  }
+  in.extra_metrics["not_applicable"] = not_applicable;
   const CompareSummary s = write_compare_report(in, o.out_dir);
   if (metrics_out) *metrics_out = s.metrics;
   const bool rtl_differs = rtl_ran && !(rtl_ok && s.rtl_equals_ref);
@@ -67,7 +93,10 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
                              s.metrics["float_ip_vs_float_mismatched_pixels"].dump());
     for (const auto& line : in.mismatch_lines) std::cerr << line << "\n";
     std::cerr << fmt::format("{}: report {}\n",
-                             !rtl_ran ? "NO RTL (--no-rtl)" : rtl_differs ? "FAIL" : "PASS",
+                             !sc.patches.empty() ? "PATCHES (float backends only, ref/rtl not applicable)"
+                             : !rtl_ran          ? "NO RTL (--no-rtl)"
+                             : rtl_differs       ? "FAIL"
+                                                 : "PASS",
                              (fs::path(o.out_dir) / "report.html").string());
   }
   return rtl_differs ? 2 : 0;

@@ -475,6 +475,8 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
                             {"config", in.config},
                             {"rtl", in.rtl},
                             {"mismatch_records", in.mismatch_lines}};
+  if (in.extra_metrics.is_object())
+    for (const auto& [key, value] : in.extra_metrics.items()) metrics[key] = value;
 
   std::vector<WrittenImage> render_images;
   for (const BackendRender& b : in.renders) {

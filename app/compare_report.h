@@ -33,6 +33,8 @@ struct CompareInput {
   nlohmann::json rtl;  // co-simulation statistics: cycles, pairs, latency_cycles, stall_cycles,
                        // items_per_cycle, sim_seconds, harness ("c++"/"systemc"), ...; may be null
   std::vector<std::string> mismatch_lines;  // human-readable mismatch records (first few)
+  nlohmann::json extra_metrics;  // merged into metrics.json at the top level (e.g. "patches",
+                                 // "not_applicable"); may be null
 };
 
 struct CompareSummary {

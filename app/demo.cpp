@@ -91,6 +91,9 @@ int run_demo(const DemoOptions& options) {
                                loaded[k].camera.height,
                                !errors[k].empty() ? "error: " + errors[k]
                                : codes[k] != 0    ? "FAIL, see " + co.out_dir + "/report.html"
+                               : !loaded[k].patches.empty()
+                                   ? std::string("patches: float backends and every patch method "
+                                                 "(ref, rtl not applicable)")
                                : co.skip_rtl      ? std::string("software backends only (--no-rtl)")
                                                   : std::string("PASS, rtl == ref"));
     }
@@ -111,7 +114,12 @@ int run_demo(const DemoOptions& options) {
     m["scene"] = b.name;
     m["report"] = std::string(b.name) + "/report.html";
     summary.push_back(m);
-    const auto cell = [&](const char* key) { return m.contains(key) ? m[key].dump() : "null"; };
+    // Patch scenes have no ref or rtl render: their cells read "n/a", not "null".
+    const bool patches = !sc.patches.empty();
+    const auto cell = [&](const char* key) -> std::string {
+      if (m.contains(key) && !m[key].is_null()) return m[key].dump();
+      return patches ? "n/a" : "null";
+    };
     const nlohmann::json rtl = m.value("rtl", nlohmann::json());
     const auto num = [&](const char* key, const char* f) {
       return rtl.is_object() && rtl.contains(key) && rtl[key].is_number()
@@ -135,7 +143,8 @@ int run_demo(const DemoOptions& options) {
                              cell("ref_vs_float_ip_mismatched_pixels"),
                              cell("ref_vs_float_mismatched_pixels"),
                              cell("float_ip_vs_float_mismatched_pixels"), cell("cycles"),
-                             rc != 0 ? "FAIL" : options.compare.skip_rtl ? "not run" : "PASS");
+                             rc != 0 ? "FAIL" : patches ? "n/a (patches)"
+                             : options.compare.skip_rtl ? "not run" : "PASS");
   }
   const fs::path out(options.out_dir);
   write_text_file(out / "summary.json",

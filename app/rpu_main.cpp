@@ -22,8 +22,10 @@
 #include "image/image_io.h"
 #include "common/output_file.h"
 #include "model/ref_renderer.h"
+#include "patch/patch_shading.h"
 #include "scene/compiled_scene.h"
 #include "tracer/float_tracer.h"
+#include "volume_cmd.h"
 
 namespace {
 
@@ -43,6 +45,12 @@ struct CommonFlags {
   std::string trace_pixel;   // X,Y
   std::string trace_out = "trace.fst";
   bool rtl_fault = false;
+  std::string patch_method = "thesis";  // ALGORITHM 4: thesis | martin | newton
+  std::string patch_map_size;           // WxH of the preliminary map ("" = the image's)
+  bool patch_map_full = false;          // full-precision map parameters instead of 8 bits
+  std::string patch_start = "map";      // map | random (eq 3, Bézier patches)
+  double patch_tolerance = patch::RefineOptions{}.tolerance_pixels;
+  int patch_iterations = patch::RefineOptions{}.max_iterations;
 
   void add_to(CLI::App& app) {
     app.add_option("--n", hw.n, "result bits of the iterative process (K = n/n1 steps)")
@@ -75,6 +83,23 @@ struct CommonFlags {
     app.add_option("--trace-pixel", trace_pixel,
                    "rtl: re-run the work items of pixel X,Y with an FST waveform");
     app.add_option("--trace-out", trace_out, "rtl: the waveform file of --trace-pixel")
+        ->capture_default_str();
+    app.add_option("--patch-method", patch_method,
+                   "patches: thesis (map + gradient / steepest descent / Newton-Cramer), martin "
+                   "(Martin et al. 2000 BVH + Newton) or newton (map + Newton)")
+        ->capture_default_str();
+    app.add_option("--patch-map-size", patch_map_size,
+                   "patches: preliminary map resolution WxH (default: the image's)");
+    app.add_flag("--patch-map-full", patch_map_full,
+                 "patches: full-precision map parameters (default: 8 bits, as the thesis)");
+    app.add_option("--patch-start", patch_start,
+                   "patches: map, or random (eq 3: random starts for Bezier patches)")
+        ->capture_default_str();
+    app.add_option("--patch-tolerance", patch_tolerance,
+                   "patches: convergence, the hit's distance from the ray in pixels")
+        ->capture_default_str();
+    app.add_option("--patch-iterations", patch_iterations,
+                   "patches: iteration budget of the thesis refiners (steps or directions)")
         ->capture_default_str();
     app.add_flag("--rtl-fault", rtl_fault,
                  "rtl: use the build with a deliberately injected fault (tests of the checker)");
@@ -109,9 +134,10 @@ struct CommonFlags {
     return sc;
   }
   // "WxH" (x or X) as two integers; any other text is refused naming the flag.
-  static std::pair<long long, long long> parse_size(const std::string& text) {
+  static std::pair<long long, long long> parse_size(const std::string& text,
+                                                    const std::string& flag = "--size") {
     const auto bad = [&] {
-      return Error("--size", "must be WxH (two whole numbers, e.g. 640x480), got '" + text + "'");
+      return Error(flag, "must be WxH (two whole numbers, e.g. 640x480), got '" + text + "'");
     };
     const size_t x = text.find_first_of("xX");
     if (x == std::string::npos) throw bad();
@@ -123,7 +149,7 @@ struct CommonFlags {
       const auto [end, ec] = std::from_chars(b, e, v[k]);
       if (part[k].empty() || ec == std::errc::result_out_of_range)
         throw ec == std::errc::result_out_of_range
-            ? Error("--size", "image size '" + text + "' is out of range: each side must be in "
+            ? Error(flag, "image size '" + text + "' is out of range: each side must be in "
                               "[1, " + std::to_string(limits::kMaxImageSide) + "]")
             : bad();
       if (ec != std::errc() || end != e) throw bad();
@@ -136,6 +162,7 @@ struct CommonFlags {
     o.hw = params();
     o.fl = float_options();
     o.ref = ref_options();
+    o.patch = patch_options();
     o.systemc = systemc;
     o.fault = rtl_fault;
     o.trace_path = trace_out;
@@ -173,13 +200,36 @@ struct CommonFlags {
     o.grid = !no_grid;
     return o;
   }
+  patch::PatchRenderOptions patch_options() const {
+    patch::PatchRenderOptions o;
+    o.method = patch::parse_patch_method(patch_method, "--patch-method");
+    if (patch_start == "map") o.start = patch::PatchStart::kMap;
+    else if (patch_start == "random") o.start = patch::PatchStart::kRandom;
+    else throw Error("--patch-start", "must be map or random, got '" + patch_start + "'");
+    if (!patch_map_size.empty()) {
+      const auto [w, h] = parse_size(patch_map_size, "--patch-map-size");
+      limits::check_image_size("--patch-map-size", w, h);
+      o.map.width = static_cast<int>(w);
+      o.map.height = static_cast<int>(h);
+    }
+    o.map.quantised = !patch_map_full;
+    if (!(patch_tolerance > 0.0 && patch_tolerance <= 1.0))
+      throw Error("--patch-tolerance", fmt::format("must be in (0, 1] pixels, got {}", patch_tolerance));
+    if (patch_iterations < 1 || patch_iterations > 100000)
+      throw Error("--patch-iterations", fmt::format("must be in [1, 100000], got {}", patch_iterations));
+    o.refine.tolerance_pixels = patch_tolerance;
+    o.refine.max_iterations = patch_iterations;
+    o.refine.max_evaluations = 4 * patch_iterations;
+    o.threads = static_cast<int>(threads);
+    return o;
+  }
   ref::RefOptions ref_options() const {
     return {static_cast<int>(threads), !no_binning, !no_grid};
   }
 };
 
 int render(const std::string& scene_arg, const std::string& backend, const std::string& output,
-           const CommonFlags& flags, bool quiet) {
+           const CommonFlags& flags, bool quiet, bool shade) {
   const auto& names = app::backend_names();
   if (std::find(names.begin(), names.end(), backend) == names.end())
     throw Error("--backend", "unknown backend '" + backend + "' (float, float-ip, ref, rtl)");
@@ -195,11 +245,34 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   const image::Frame& frame = r.render.frame;
   std::vector<scene::Color> colors;
   for (const auto& p : sc.primitives) colors.push_back(p.color);
-  image::write_rgb(output, frame.width, frame.height, image::to_rgb(frame, colors, sc.background));
+  std::vector<float> rgb = image::to_rgb(frame, colors, sc.background);
+  if (shade && !r.patch_hits.pixels.empty()) {
+    patch::PatchHitMap shown = r.patch_hits;  // pixels a curve or texture won stay flat
+    for (size_t k = 0; k < shown.pixels.size(); ++k)
+      shown.pixels[k].hit = shown.pixels[k].hit && frame.primitive[k] >= sc.first_patch_primitive;
+    patch::shade_patch_pixels(rgb, shown, patch::prepare_surfaces(sc.patches), sc.camera);
+  }
+  image::write_rgb(output, frame.width, frame.height, rgb);
   if (!quiet)
     std::cerr << fmt::format("{}: {}x{} {} in {:.3f} s, {} hit pixels, {} ray/segment pairs\n",
                              output, frame.width, frame.height, backend, r.render.seconds,
                              frame.hit_pixels(), r.pairs);
+  if (!quiet && r.patch.is_object())
+    std::cerr << fmt::format("patches ({}): {} {:.3f} s, {} {:.3f} s, {} starts ({} converged), {} "
+                             "silhouette pixels (no start converged: {} left the domain, {} "
+                             "stalled, {} iteration limit, {} singular); {} Newton fallbacks\n",
+                             r.patch["method"].get<std::string>(),
+                             r.patch.contains("map_seconds") ? "map" : "bvh build",
+                             r.patch.value("map_seconds", r.patch.value("bvh_build_seconds", 0.0)),
+                             r.patch.contains("refine_seconds") ? "refine" : "trace",
+                             r.patch.value("refine_seconds", r.patch.value("trace_seconds", 0.0)),
+                             r.patch["starts"].dump(), r.patch["converged"].dump(),
+                             r.patch["silhouette_pixels"].dump(),
+                             r.patch["silhouette_left_domain"].dump(),
+                             r.patch["silhouette_stalled"].dump(),
+                             r.patch["silhouette_iteration_limit"].dump(),
+                             r.patch["silhouette_singular"].dump(),
+                             r.patch["fallback_starts"].dump());
   if (!r.precision_warning.empty()) std::cerr << "rpu: warning: " << r.precision_warning << "\n";
   if (r.overflows > 0)
     std::cerr << fmt::format("rpu: warning: {} work items saturated a datapath value; widen "
@@ -251,6 +324,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   render_cmd->add_option("-o,--output", output, "output image (.png, .exr, .ppm, ...)")->required();
   render_cmd->add_flag("-q,--quiet", quiet, "no timing line on stderr");
+  bool shade = false;
+  render_cmd->add_flag("--shade", shade,
+                       "patches: Lambert shading with the surface normal (a picture; default: "
+                       "exact flat colours)");
   flags.add_to(*render_cmd);
 
   auto* config_cmd = app.add_subcommand("config", "print the effective parameter set");
@@ -290,6 +367,21 @@ int main(int argc, char** argv) {
 
   auto* list_cmd = app.add_subcommand("scenes", "list the built-in scenes");
 
+  auto* volume_cmd = app.add_subcommand(
+      "volume", "volume enclosed by the scene's Bezier patches: exact, graphical, slices");
+  std::string volume_scene;
+  app::VolumeOptions volume;
+  volume_cmd->add_option("scene", volume_scene, "scene file (JSON) or builtin:NAME")->required();
+  volume_cmd->add_option("--slices", volume.slices, "slice intervals of the slice method")
+      ->capture_default_str();
+  volume_cmd->add_option("--slice-grid", volume.slice_grid,
+                         "tessellation per patch side for the slice areas")
+      ->capture_default_str();
+  volume_cmd->add_flag("--no-closure-check", volume.no_closure_check,
+                       "print the estimates even for an open or inconsistently oriented model");
+  volume_cmd->add_flag("--planar-openings", volume.planar_openings,
+                       "accept openings in planes z = const as closed by those planes");
+
   // A file-size limit (ulimit -f) must make a write fail with EFBIG, which is reported, rather
   // than kill the process half-way through a file.
   std::signal(SIGXFSZ, SIG_IGN);
@@ -303,7 +395,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    if (render_cmd->parsed()) return render(scene_arg, backend, output, flags, quiet);
+    if (render_cmd->parsed()) return render(scene_arg, backend, output, flags, quiet, shade);
     if (config_cmd->parsed()) return print_config(flags);
     if (compare_cmd->parsed()) {
       compare.backends = flags.backend_options();
@@ -321,6 +413,7 @@ int main(int argc, char** argv) {
       if (ec) sweep.self = argv[0];
       return app::run_sweep(sweep);
     }
+    if (volume_cmd->parsed()) return app::run_volume(volume_scene, volume, std::cout);
     if (list_cmd->parsed()) {
       for (const auto& b : app::builtin_scenes()) std::cout << "builtin:" << b.name << "\n";
       return 0;

@@ -57,6 +57,19 @@ expect_error("n not a multiple of n1" "--n;not a multiple of n1"
              render builtin:ellipse6 --n 16 --n1 3 -o ${OUT}/x.png)
 expect_error("n1 too large" "--n1;bits per step" config --n 18 --n1 9)
 expect_error("unknown backend" "--backend;warp" render builtin:ellipse6 --backend warp -o ${OUT}/x.png)
+# Patches (ALGORITHM 4): the fixed-point model and the RTL have no path for them; bad patch flags.
+expect_error("patches on ref" "builtin:column: patches;the ref backend has no fixed-point path"
+             render builtin:column --backend ref --size 16x16 -o ${OUT}/x.png)
+expect_error("patches on rtl" "builtin:column: patches;the rtl backend has no fixed-point path"
+             render builtin:column --backend rtl --size 16x16 -o ${OUT}/x.png)
+expect_error("unknown patch method" "--patch-method;unknown patch method 'bisection'"
+             render builtin:teapot --patch-method bisection -o ${OUT}/x.png)
+expect_error("bad patch start" "--patch-start;must be map or random"
+             render builtin:teapot --patch-start grid -o ${OUT}/x.png)
+expect_error("bad patch map size" "--patch-map-size;must be WxH"
+             render builtin:teapot --patch-map-size 512 -o ${OUT}/x.png)
+expect_error("bad patch tolerance" "--patch-tolerance;must be in (0, 1] pixels"
+             render builtin:teapot --patch-tolerance 0 -o ${OUT}/x.png)
 expect_error("unknown image format" "x.nosuchformat;image format"
              render builtin:ellipse6 -o ${OUT}/x.nosuchformat)
 expect_error("unwritable output" "no_dir/x.png;does not exist"

@@ -68,6 +68,31 @@ std::string with_camera(const std::string& members) {
 
 constexpr const char* kSource = "scene.json";
 
+// A valid bilinear Bézier patch with extra members (and one control point replaced).
+std::string bezier_patch(const std::string& extra, const std::string& last_point = "[1, 1, 1]") {
+  return with_camera(R"("patches": [{"type": "bezier", "degree": [1, 1], "control_points": )"
+                     R"([[0, 0, 0], [1, 0, 0], [0, 1, 0], )" + last_point + "]" + extra + "}]");
+}
+
+// A degree (2, 1) B-spline patch with the given size member, knot vectors and point count.
+std::string bspline_patch(const std::string& size, const std::string& ku, const std::string& kv,
+                          int points) {
+  std::string pts;
+  for (int k = 0; k < points; ++k) pts += (k ? ", " : "") + fmt::format("[{}, {}, 0]", k % 3, k / 3);
+  return with_camera(R"("patches": [{"type": "bspline", "degree": [2, 1], )" + size +
+                     R"(, "knots_u": )" + ku + R"(, "knots_v": )" + kv +
+                     R"(, "control_points": [)" + pts + "]}]");
+}
+
+// A valid 3×2 NURBS patch apart from `weights` (the member text, with its leading comma).
+std::string nurbs_patch(const std::string& weights) {
+  return with_camera(R"("patches": [{"type": "nurbs", "degree": [2, 1], "size": [3, 2], )"
+                     R"("knots_u": [0, 0, 0, 1, 1, 1], "knots_v": [0, 0, 1, 1], "control_points": )"
+                     R"([[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0], [2, 0, 0], [2, 1, 0]])" +
+                     weights + "}]");
+}
+
+
 struct BadCase {
   std::string name;
   std::string json;
@@ -255,6 +280,64 @@ std::vector<BadCase> bad_cases() {
        "out of range"},
       {"half_width_huge", mutate(R"("half_width": 0.05)", R"("half_width": 1e10)"),
        "textures[0].half_width", "out of range"},
+      // Patches (ALGORITHM 4).
+      {"patches_object", with_camera(R"("patches": {})"), "patches", "expected an array of patches"},
+      {"patch_no_type", with_camera(R"("patches": [{"degree": [1, 1]}])"), "patches[0]",
+       "missing required key 'type'"},
+      {"patch_unknown_type", with_camera(R"("patches": [{"type": "coons"}])"), "patches[0].type",
+       "unknown patch type \"coons\""},
+      {"patch_unknown_key", bezier_patch(R"(, "knots_u": [0, 1])"), "patches[0].knots_u",
+       "unknown key 'knots_u'"},
+      {"patch_degree_zero", with_camera(R"("patches": [{"type": "bezier", "degree": [0, 1], "control_points": [[0,0,0],[1,0,0]]}])"),
+       "patches[0].degree[0]", "degree must be in [1, 10], got 0"},
+      {"patch_degree_eleven", with_camera(R"("patches": [{"type": "bezier", "degree": [1, 11]}])"),
+       "patches[0].degree[1]", "degree must be in [1, 10], got 11"},
+      {"patch_degree_fraction", with_camera(R"("patches": [{"type": "bezier", "degree": [1.5, 1]}])"),
+       "patches[0].degree[0]", "expected a whole number"},
+      {"patch_degree_scalar", with_camera(R"("patches": [{"type": "bezier", "degree": 3}])"),
+       "patches[0].degree", "expected an array of 2 whole numbers"},
+      {"bezier_point_count", with_camera(R"("patches": [{"type": "bezier", "degree": [1, 1], "control_points": [[0,0,0],[1,0,0],[0,1,0]]}])"),
+       "patches[0].control_points", "expected 4 control points ((degree_u + 1)·(degree_v + 1) = 2·2), got 3"},
+      {"bezier_point_nan", bezier_patch("", "[1, 1, 1e999]"), "patches[0].control_points[3][2]",
+       "not a finite number"},
+      {"bezier_set_empty", with_camera(R"("patches": [{"type": "bezier_set", "degree": [1, 1], "patches": []}])"),
+       "patches[0].patches", "at least one patch"},
+      {"bezier_set_count", with_camera(R"("patches": [{"type": "bezier_set", "degree": [1, 1], "patches": [[[0,0,0],[1,0,0],[0,1,0],[1,1,0]], [[0,0,0]]]}])"),
+       "patches[0].patches[1]", "expected 4 control points"},
+      {"bspline_point_count", bspline_patch(R"("size": [3, 2])", R"([0,0,0,1,1,1])", R"([0,0,1,1])", 5),
+       "patches[0].control_points", "expected 6 control points (size 3·2), got 5"},
+      {"bspline_size_small", bspline_patch(R"("size": [2, 2])", R"([0,0,0,1,1,1])", R"([0,0,1,1])", 4),
+       "patches[0].size[0]", "a degree-2 direction needs at least 3 control points, got 2"},
+      {"bspline_missing_size", with_camera(R"("patches": [{"type": "bspline", "degree": [1, 1]}])"),
+       "patches[0]", "missing required key 'size'"},
+      {"knots_count", bspline_patch(R"("size": [3, 2])", R"([0,0,0,1,1])", R"([0,0,1,1])", 6),
+       "patches[0].knots_u", "expected 6 knots (size_u + degree_u + 1 = 3 + 2 + 1), got 5"},
+      {"knots_decreasing", bspline_patch(R"("size": [4, 2])", R"([0,0,0,0.6,0.5,1,1])", R"([0,0,1,1])", 8),
+       "patches[0].knots_u[4]", "knots must be non-decreasing; 0.5 follows 0.6"},
+      {"knots_decreasing_v", bspline_patch(R"("size": [3, 2])", R"([0,0,0,1,1,1])", R"([0,0,1,0.5])", 6),
+       "patches[0].knots_v[3]", "non-decreasing"},
+      {"knots_not_clamped_start", bspline_patch(R"("size": [4, 2])", R"([0,0,0.1,0.5,1,1,1])", R"([0,0,1,1])", 8),
+       "patches[0].knots_u[2]", "must be clamped: the first degree + 1 = 3 knots must be equal"},
+      {"knots_not_clamped_end", bspline_patch(R"("size": [4, 2])", R"([0,0,0,0.5,0.9,1,1])", R"([0,0,1,1])", 8),
+       "patches[0].knots_u[4]", "must be clamped: the last degree + 1 = 3 knots must be equal"},
+      {"knots_all_equal", bspline_patch(R"("size": [3, 2])", R"([0,0,0,0,0,0])", R"([0,0,1,1])", 6),
+       "patches[0].knots_u", "the parameter interval is empty"},
+      {"knots_interior_multiplicity", bspline_patch(R"("size": [6, 2])", R"([0,0,0,0.5,0.5,0.5,1,1,1])", R"([0,0,1,1])", 12),
+       "patches[0].knots_u[3]", "interior knot 0.5 repeats 3 times; at most degree = 2"},
+      {"knots_string", bspline_patch(R"("size": [3, 2])", R"([0,0,0,1,"1",1])", R"([0,0,1,1])", 6),
+       "patches[0].knots_u[4]", "expected a number, got a string"},
+      {"nurbs_missing_weights", nurbs_patch(""), "patches[0]", "missing required key 'weights'"},
+      {"nurbs_weight_count", nurbs_patch(R"(, "weights": [1, 1, 1, 1, 1])"), "patches[0].weights",
+       "expected one weight per control point (6), got 5"},
+      {"nurbs_weight_zero", nurbs_patch(R"(, "weights": [1, 1, 0, 1, 1, 1])"), "patches[0].weights[2]",
+       "weights must be greater than 0, got 0"},
+      {"nurbs_weight_negative", nurbs_patch(R"(, "weights": [1, 1, 1, 1, -0.5, 1])"),
+       "patches[0].weights[4]", "weights must be greater than 0, got -0.5"},
+      {"nurbs_weight_inf", nurbs_patch(R"(, "weights": [1, 1, 1, 1, 1, 1e999])"),
+       "patches[0].weights[5]", "not a finite number"},
+      {"bspline_weights_key", bspline_patch(R"("size": [3, 2], "weights": [1,1,1,1,1,1])", R"([0,0,0,1,1,1])", R"([0,0,1,1])", 6),
+       "patches[0].weights", "unknown key 'weights'"},
+      {"patch_color", bezier_patch(R"(, "color": [0, 2, 0])"), "patches[0].color[1]", "[0, 1]"},
       // Raw parser text never leaks: no "[json.exception...]" (checked for every case below).
       {"invalid_utf8", mutate(R"("test scene")", "\"te\xffst\""), "", "invalid JSON at line 2"},
       {"nested_too_deep", with_camera(R"("about": )" + std::string(100, '[')), "about" +
@@ -317,6 +400,43 @@ TEST(SceneJson, FullSceneRoundTrips) {
   EXPECT_FALSE(t.closed);
   EXPECT_EQ(t.half_width, 0.05);
   EXPECT_EQ(t.color, (Color{0.5, 1.0, 0.0}));
+}
+
+TEST(SceneJson, PatchesRoundTrip) {
+  const Scene s = parse_scene(with_camera(R"("patches": [
+    {"type": "bezier", "degree": [1, 2], "control_points": [[0,0,0],[0,1,0],[0,2,0],[1,0,0],[1,1,1],[1,2,0]],
+     "color": [0.5, 0.25, 1]},
+    {"type": "bezier_set", "degree": [1, 1], "patches": [[[0,0,0],[1,0,0],[0,1,0],[1,1,0]],
+                                                         [[0,0,1],[1,0,1],[0,1,1],[1,1,1]]]},
+    {"type": "bspline", "degree": [2, 1], "size": [4, 2], "knots_u": [0, 0, 0, 0.5, 2, 2, 2],
+     "knots_v": [1, 1, 3, 3], "control_points": [[0,0,0],[0,1,0],[1,0,0],[1,1,0],[2,0,0],[2,1,0],[3,0,0],[3,1,0]]},
+    {"type": "nurbs", "degree": [2, 1], "size": [3, 2], "knots_u": [0, 0, 0, 1, 1, 1],
+     "knots_v": [0, 0, 1, 1], "control_points": [[0,0,0],[0,1,0],[1,0,0],[1,1,0],[2,0,0],[2,1,0]],
+     "weights": [1, 1, 0.5, 0.5, 2, 2]}])"), kSource);
+  ASSERT_EQ(s.patches.size(), 5u);  // the bezier_set holds two
+  EXPECT_EQ(s.patches[0].type, PatchType::kBezier);
+  EXPECT_EQ(s.patches[0].degree_u, 1);
+  EXPECT_EQ(s.patches[0].degree_v, 2);
+  EXPECT_EQ(s.patches[0].size_u, 2);
+  EXPECT_EQ(s.patches[0].size_v, 3);
+  EXPECT_EQ(s.patches[0].control_points[4], (Vec3{1, 1, 1}));
+  EXPECT_EQ(s.patches[0].color, (Color{0.5, 0.25, 1}));
+  EXPECT_EQ(s.patches[1].control_points[3], (Vec3{1, 1, 0}));
+  EXPECT_EQ(s.patches[2].control_points[3], (Vec3{1, 1, 1}));
+  EXPECT_EQ(s.patches[2].color, (Color{1, 1, 1}));
+  EXPECT_EQ(s.patches[3].type, PatchType::kBSpline);
+  EXPECT_EQ(s.patches[3].size_u, 4);
+  EXPECT_EQ(s.patches[3].knots_u, (std::vector<double>{0, 0, 0, 0.5, 2, 2, 2}));
+  EXPECT_EQ(s.patches[3].knots_v, (std::vector<double>{1, 1, 3, 3}));
+  EXPECT_TRUE(s.patches[3].weights.empty());
+  EXPECT_EQ(s.patches[4].type, PatchType::kNurbs);
+  EXPECT_EQ(s.patches[4].weights, (std::vector<double>{1, 1, 0.5, 0.5, 2, 2}));
+  // The compiled scene gives the patches primitive ids after curves and textures.
+  const CompiledScene c = compile_scene(s);
+  EXPECT_EQ(c.first_patch_primitive, 0);
+  ASSERT_EQ(c.primitives.size(), 5u);
+  EXPECT_EQ(c.primitives[4].kind, Primitive::Kind::kPatch);
+  EXPECT_EQ(c.patches.size(), 5u);
 }
 
 TEST(SceneJson, Defaults) {

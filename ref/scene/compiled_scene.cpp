@@ -76,6 +76,11 @@ CompiledScene compile_scene(const Scene& scene) {
                      out.texture_segments);
   }
   out.texture_grid = ClassificationGrid::build(out.texture_segments);
+  // Patches (ALGORITHM 4) follow the textures; they are traced by the float backends only.
+  out.first_patch_primitive = static_cast<int>(out.primitives.size());
+  for (size_t k = 0; k < scene.patches.size(); ++k)
+    out.primitives.push_back({Primitive::Kind::kPatch, static_cast<int>(k), scene.patches[k].color});
+  out.patches = scene.patches;
   return out;
 }
 

@@ -13,9 +13,9 @@
 namespace rpu::scene {
 
 // A primitive is one curve or one texture; its id orders equal-depth hits (lower wins) and
-// indexes the colour table. Curves come first (ids 0..C-1), then textures.
+// indexes the colour table. Curves come first (ids 0..C-1), then textures, then patches.
 struct Primitive {
-  enum class Kind { kCurve, kTexture };
+  enum class Kind { kCurve, kTexture, kPatch };
   Kind kind = Kind::kCurve;
   int index = 0;  // index within scene.curves or scene.textures
   Color color{};
@@ -36,6 +36,10 @@ struct CompiledScene {
   std::vector<CompiledSegment> curve_segments;
   std::vector<CompiledSegment> texture_segments;
   ClassificationGrid texture_grid;  // over texture_segments
+  // Parametric patches (ALGORITHM 4), primitive ids first_patch_primitive + k; the float
+  // backends only (ref/patch/), the fixed-point model and the RTL refuse them.
+  std::vector<Patch> patches;
+  int first_patch_primitive = 0;
 };
 
 // Derives missing normals, builds every segment's constants and the classification grid.

@@ -1,6 +1,7 @@
 #include "scene/scene_json.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <optional>
@@ -193,6 +194,166 @@ Texture texture(const Json& j, const Where& w) {
   return t;
 }
 
+// ---- patches (ALGORITHM 4) ----
+
+// A whole number in [lo, hi].
+int whole_in(const Json& j, const Where& w, int lo, int hi, const char* what) {
+  const double v = number(j, w);
+  if (v != std::floor(v)) w.fail(std::string("expected a whole number (") + what + "), got " + j.dump());
+  if (v < lo || v > hi)
+    w.fail(fmt::format("{} must be in [{}, {}], got {}", what, lo, hi, j.dump()));
+  return static_cast<int>(v);
+}
+
+// [a, b] of whole numbers in [lo, hi].
+std::array<int, 2> whole_pair(const Json& j, const Where& w, int lo, int hi, const char* what) {
+  if (!j.is_array() || j.size() != 2)
+    w.fail(std::string("expected an array of 2 whole numbers [") + what + " in u, in v], got " +
+           describe(j));
+  return {whole_in(j[0], w.index(0), lo, hi, what), whole_in(j[1], w.index(1), lo, hi, what)};
+}
+
+// `count` control points (3-D positions).
+std::vector<Vec3> control_points(const Json& j, const Where& w, size_t count, const std::string& why) {
+  if (!j.is_array()) w.fail("expected an array of control points, got " + describe(j));
+  if (j.size() != count)
+    w.fail(fmt::format("expected {} control points ({}), got {}", count, why, j.size()));
+  std::vector<Vec3> pts;
+  pts.reserve(count);
+  for (size_t i = 0; i < count; ++i) pts.push_back(vec(j[i], w.index(i), 3));
+  return pts;
+}
+
+// A clamped, non-decreasing knot vector of size + degree + 1 values: the first and the last
+// degree + 1 knots equal, interior knots of multiplicity at most `degree` (the surface stays
+// connected), a parameter interval of non-zero length.
+std::vector<double> knot_vector(const Json& j, const Where& w, int degree, int size, char dir) {
+  const size_t count = static_cast<size_t>(size + degree + 1);
+  if (!j.is_array()) w.fail("expected an array of knots, got " + describe(j));
+  if (j.size() != count)
+    w.fail(fmt::format("expected {} knots (size_{} + degree_{} + 1 = {} + {} + 1), got {}", count,
+                       dir, dir, size, degree, j.size()));
+  std::vector<double> k;
+  k.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
+    k.push_back(coordinate(j[i], w.index(i)));
+    if (i > 0 && k[i] < k[i - 1])
+      w.index(i).fail(fmt::format("knots must be non-decreasing; {} follows {} at knots_{}[{}]",
+                                  j[i].dump(), j[i - 1].dump(), dir, i - 1));
+  }
+  const size_t p = static_cast<size_t>(degree);
+  for (size_t i = 1; i <= p; ++i) {
+    if (k[i] != k[0])
+      w.index(i).fail(fmt::format("the knot vector must be clamped: the first degree + 1 = {} knots "
+                                  "must be equal, got {} after {}", p + 1, j[i].dump(), j[0].dump()));
+    if (k[count - 1 - i] != k[count - 1])
+      w.index(count - 1 - i)
+          .fail(fmt::format("the knot vector must be clamped: the last degree + 1 = {} knots must "
+                            "be equal, got {} before {}", p + 1, j[count - 1 - i].dump(),
+                            j[count - 1].dump()));
+  }
+  if (!(k[0] < k[count - 1]))
+    w.fail(fmt::format("the parameter interval is empty: every knot is {}", j[0].dump()));
+  for (size_t i = p + 1; i + p + 1 < count;) {
+    size_t m = 1;
+    while (i + m + p + 1 < count && k[i + m] == k[i]) ++m;
+    if (k[i] == k[0] || k[i] == k[count - 1])
+      w.index(i).fail(fmt::format("interior knot {} equals the clamped end knot; an end knot may "
+                                  "appear degree + 1 = {} times", j[i].dump(), p + 1));
+    if (m > p)
+      w.index(i).fail(fmt::format("interior knot {} repeats {} times; at most degree = {} (the "
+                                  "surface would fall apart)", j[i].dump(), m, p));
+    i += m;
+  }
+  return k;
+}
+
+std::vector<Patch> patch_object(const Json& j, const Where& w) {
+  if (!j.is_object()) w.fail("expected an object, got " + describe(j));
+  const Json& t = required(j, w, "type");
+  if (!t.is_string()) w.key("type").fail("expected a string (bezier, bspline, nurbs or bezier_set), got " + describe(t));
+  const std::string type = t.get<std::string>();
+  if (type == "bezier") {
+    expect_object(j, w, {"type", "degree", "control_points", "color"});
+  } else if (type == "bezier_set") {
+    expect_object(j, w, {"type", "degree", "patches", "color"});
+  } else if (type == "bspline") {
+    expect_object(j, w, {"type", "degree", "size", "knots_u", "knots_v", "control_points", "color"});
+  } else if (type == "nurbs") {
+    expect_object(j, w,
+                  {"type", "degree", "size", "knots_u", "knots_v", "control_points", "weights", "color"});
+  } else {
+    w.key("type").fail("unknown patch type " + t.dump() + "; expected bezier, bspline, nurbs or bezier_set");
+  }
+  Patch p;
+  const auto deg = whole_pair(required(j, w, "degree"), w.key("degree"), 1, limits::kMaxPatchDegree, "degree");
+  p.degree_u = deg[0], p.degree_v = deg[1];
+  if (const Json* c = find_key(j, "color")) p.color = color(*c, w.key("color"));
+
+  if (type == "bezier" || type == "bezier_set") {
+    p.type = PatchType::kBezier;
+    p.size_u = p.degree_u + 1, p.size_v = p.degree_v + 1;
+    const size_t count = static_cast<size_t>(p.size_u * p.size_v);
+    const std::string why = fmt::format("(degree_u + 1)·(degree_v + 1) = {}·{}", p.size_u, p.size_v);
+    if (type == "bezier") {
+      p.control_points = control_points(required(j, w, "control_points"), w.key("control_points"), count, why);
+      return {p};
+    }
+    const Json& set = required(j, w, "patches");
+    const Where ws = w.key("patches");
+    if (!set.is_array()) ws.fail("expected an array of patches (arrays of control points), got " + describe(set));
+    if (set.empty()) ws.fail("expected at least one patch, got an empty array");
+    std::vector<Patch> out;
+    out.reserve(set.size());
+    for (size_t i = 0; i < set.size(); ++i) {
+      out.push_back(p);
+      out.back().control_points = control_points(set[i], ws.index(i), count, why);
+    }
+    return out;
+  }
+
+  p.type = type == "nurbs" ? PatchType::kNurbs : PatchType::kBSpline;
+  const Where wsz = w.key("size");
+  const auto size = whole_pair(required(j, w, "size"), wsz, 2, 1 << 20, "control points per direction");
+  p.size_u = size[0], p.size_v = size[1];
+  if (p.size_u < p.degree_u + 1)
+    wsz.index(0).fail(fmt::format("a degree-{} direction needs at least {} control points, got {}",
+                                  p.degree_u, p.degree_u + 1, p.size_u));
+  if (p.size_v < p.degree_v + 1)
+    wsz.index(1).fail(fmt::format("a degree-{} direction needs at least {} control points, got {}",
+                                  p.degree_v, p.degree_v + 1, p.size_v));
+  const long long count = static_cast<long long>(p.size_u) * p.size_v;
+  const Json& cp = required(j, w, "control_points");
+  if (cp.is_array() && static_cast<long long>(cp.size()) != count)
+    w.key("control_points").fail(fmt::format("expected {} control points (size {}·{}), got {}", count,
+                                             p.size_u, p.size_v, cp.size()));
+  p.control_points = control_points(cp, w.key("control_points"), static_cast<size_t>(count),
+                                    fmt::format("size {}·{}", p.size_u, p.size_v));
+  p.knots_u = knot_vector(required(j, w, "knots_u"), w.key("knots_u"), p.degree_u, p.size_u, 'u');
+  p.knots_v = knot_vector(required(j, w, "knots_v"), w.key("knots_v"), p.degree_v, p.size_v, 'v');
+  if (p.type == PatchType::kNurbs) {
+    const Where ww = w.key("weights");
+    const Json& wj = required(j, w, "weights");
+    if (!wj.is_array()) ww.fail("expected an array of weights, got " + describe(wj));
+    if (static_cast<long long>(wj.size()) != count)
+      ww.fail(fmt::format("expected one weight per control point ({}), got {}", count, wj.size()));
+    for (size_t i = 0; i < wj.size(); ++i) {
+      const double v = coordinate(wj[i], ww.index(i));
+      if (!(v > 0.0)) ww.index(i).fail("weights must be greater than 0, got " + wj[i].dump());
+      p.weights.push_back(v);
+    }
+  }
+  return {p};
+}
+
+std::vector<Patch> patches(const Json& j, const Where& w) {
+  if (!j.is_array()) w.fail("expected an array of patches, got " + describe(j));
+  std::vector<Patch> out;
+  for (size_t i = 0; i < j.size(); ++i)
+    for (Patch& p : patch_object(j[i], w.index(i))) out.push_back(std::move(p));
+  return out;
+}
+
 // An array whose elements are read by `element`.
 template <class T, class F>
 std::vector<T> array_of(const Json& j, const Where& w, const char* what, F element) {
@@ -209,7 +370,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   const Where top{source, ""};
   if (!j.is_object())
     top.fail("expected a JSON object at the top level, got " + describe(j));
-  expect_object(j, top, {"about", "camera", "background", "curves", "textures"});
+  expect_object(j, top, {"about", "camera", "background", "curves", "textures", "patches"});
 
   Scene scene;
   scene.source = source;
@@ -222,6 +383,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     scene.curves = array_of<Curve>(*c, top.key("curves"), "curves", curve);
   if (const Json* t = find_key(j, "textures"))
     scene.textures = array_of<Texture>(*t, top.key("textures"), "textures", texture);
+  if (const Json* p = find_key(j, "patches")) scene.patches = patches(*p, top.key("patches"));
   return scene;
 }
 

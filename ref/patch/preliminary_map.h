@@ -1,0 +1,54 @@
+// The preliminary value map of ALGORITHM 4 (seed 003, eqs 5–8): the patches rasterised once
+// (tessellated, z-buffered) into a map holding, per texel, the number of the front patch and its
+// parameters (u, v) — the start of every pixel's refinement. The thesis codes the map as an RGB
+// image: R = patch number + 1 (0: no surface, eq 5), G, B = round(255·u), round(255·v) on the
+// normalised domain (eqs 6–8). Here the patch number is an int (no 254-patch limit); u, v are
+// quantised to 8 bits as the thesis does, or kept at full precision (`quantised` false).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "patch/patch_surface.h"
+#include "scene/camera.h"
+
+namespace rpu::patch {
+
+struct MapOptions {
+  int width = 0, height = 0;      // map resolution; 0 = the image's
+  bool quantised = true;          // u, v to 8 bits (eqs 6–8); false: full precision
+  int grid = 0;                   // tessellation cells per patch side; 0 = automatic (per knot span)
+  double max_chord_pixels = 0.25; // automatic grid: chord error below this, in map texels
+  int max_grid = 256;
+  int threads = 0;                // 0 = all cores
+};
+
+struct MapTexel {
+  std::int32_t patch = -1;  // −1: no surface (R = 0)
+  float u = 0, v = 0;       // start parameters (quantised when MapOptions::quantised)
+  float depth = 0;          // c of the tessellated surface (z-buffer)
+};
+
+struct PreliminaryMap {
+  int width = 0, height = 0;
+  int image_width = 0, image_height = 0;  // the image the map serves
+  std::vector<MapTexel> texels;           // row-major
+  std::int64_t triangles = 0;
+  std::vector<int> grid_per_patch;
+
+  const MapTexel& at(int a, int b) const { return texels[static_cast<size_t>(b) * width + a]; }
+  // The texel under the centre of image pixel (i, j).
+  int map_x(int i) const { return static_cast<int>((i + 0.5) * width / image_width); }
+  int map_y(int j) const { return static_cast<int>((j + 0.5) * height / image_height); }
+};
+
+// 8-bit parameter code of eqs 6–8: round(255·t) / 255.
+inline double quantise_parameter(double t) {
+  const double q = static_cast<double>(static_cast<int>(t * 255.0 + 0.5)) / 255.0;
+  return q < 0.0 ? 0.0 : (q > 1.0 ? 1.0 : q);
+}
+
+PreliminaryMap build_preliminary_map(const std::vector<PatchSurface>& patches,
+                                     const scene::CameraFrame& camera, const MapOptions& options);
+
+}  // namespace rpu::patch
