@@ -2,7 +2,8 @@
 // For the candidate m (τ = m·2^-n):
 //   pr = A + floor(AB·m / 2^n)                        ray point
 //   t  = sat(α + floor(β·m / 2^n))                     chord parameter, Q(3.FT)
-//   g1, g2 = rpu_guide(t)                              both guides in parallel
+//   g1, g2 = rpu_guide_pair(t)                         both guides, w and L²·w shared, h²
+//                                                      from the caller (once per pair)
 //   X  = rpu_curve_point(t, g1, g2)                    curve point s(t)
 //   md = isqrt(sat(|pr − X|²)) or sat(|pr − X|²)       by Metric
 // Fixed latency; the candidate's context rides in the sub-units' tags.
@@ -22,6 +23,7 @@ module rpu_candidate #(
   parameter integer UW   = UnitFrac + 2,        // u: Q(2.FU)
   parameter integer HW   = CoordW + 5,          // guide height h
   parameter integer L2W  = 2 * CoordW + 3,      // L²
+  parameter integer RadW = 2 * CoordW + 10,     // h² (guide_radicand_w)
   parameter integer XW   = CoordW + 3,          // X
   parameter integer PrW  = CoordW + 2,          // pr
   parameter integer Md2W = 2 * CoordW + 8,      // |pr − X|² format (dist_radicand_w)
@@ -40,11 +42,13 @@ module rpu_candidate #(
   input  wire [L2W-1:0]      l2_i,
   input  wire [1:0]          mode1_i,    // guide of end 1: 0 straight, 1 arc, 2 flat
   input  wire [HW-1:0]       h1_i,
+  input  wire [RadW-1:0]     hh1_i,      // h1², computed once per pair by the caller
   input  wire [CoordW-1:0]   a1_i,
   input  wire [TFrac-1:0]    b1_i,
   input  wire [3*UW-1:0]     u1_i,
   input  wire [1:0]          mode2_i,    // guide of end 2
   input  wire [HW-1:0]       h2_i,
+  input  wire [RadW-1:0]     hh2_i,      // h2²
   input  wire [CoordW-1:0]   a2_i,
   input  wire [TFrac-1:0]    b2_i,
   input  wire [3*UW-1:0]     u2_i,
@@ -57,16 +61,45 @@ module rpu_candidate #(
   output wire                ovf_o,      // some value of this candidate saturated
   output wire [TagW-1:0]     tag_o
 );
-  localparam integer GW = CoordW + 2;  // rpu_guide's g
+  localparam integer GW = CoordW + 2;  // rpu_guide_pair's g
 
   initial begin
     if (Metric != 0 && Metric != 1) $fatal(1, "rpu_candidate: Metric must be 0 or 1");
     if (N < 1 || N > 40) $fatal(1, "rpu_candidate: N must be in 1..40");
   end
 
-  // ---- stage 1: pr(m) and t(m) ----
-  localparam integer MW = N + 2;  // m as a signed value
-  wire signed [MW-1:0] m_s = {1'b0, m_i};
+`include "rpu_mul_latency.vh"
+  // ---- pr(m) and t(m): the products (rpu_mul), then the sums, registered ----
+  localparam integer MW   = N + 2;  // m as a signed value
+  localparam integer LatM = rpu_mul_latency(TW, MW, 1, 24, 17) > rpu_mul_latency(DW, MW, 1, 24, 17)
+                          ? rpu_mul_latency(TW, MW, 1, 24, 17) : rpu_mul_latency(DW, MW, 1, 24, 17);
+  wire [MW-1:0] m_s = {1'b0, m_i};
+  // Everything the guides, the curve point and the end need rides in the t product's tag.
+  localparam integer InW = 3*CoordW + TW + 3*CoordW + 3*DW + L2W
+                         + 2 * (2 + HW + RadW + CoordW + TFrac + 3*UW) + TagW;
+  wire          mt_valid;
+  wire [TW+MW-1:0] bm;
+  wire [InW-1:0]   in_m;
+  rpu_mul #(.AW(TW), .BW(MW), .Signed(1), .TagW(InW), .Latency(LatM)) u_bm (
+    .clk_i, .rst_ni, .valid_i, .a_i(beta_i), .b_i(m_s),
+    .tag_i({a_i, alpha_i, p1_i, d_i, l2_i, mode1_i, h1_i, hh1_i, a1_i, b1_i, u1_i,
+            mode2_i, h2_i, hh2_i, a2_i, b2_i, u2_i, tag_i}),
+    .valid_o(mt_valid), .p_o(bm), .tag_o(in_m));
+  wire [3*CoordW-1:0] a_m;
+  wire [TW-1:0]       alpha_m;
+  wire [3*CoordW-1:0] p1_m;
+  wire [3*DW-1:0]     d_m;
+  wire [L2W-1:0]      l2_m;
+  wire [1:0]          mode1_m, mode2_m;
+  wire [HW-1:0]       h1_m, h2_m;
+  wire [RadW-1:0]     hh1_m, hh2_m;
+  wire [CoordW-1:0]   a1_m, a2_m;
+  wire [TFrac-1:0]    b1_m, b2_m;
+  wire [3*UW-1:0]     u1_m, u2_m;
+  wire [TagW-1:0]     tag_m;
+  assign {a_m, alpha_m, p1_m, d_m, l2_m, mode1_m, h1_m, hh1_m, a1_m, b1_m, u1_m,
+          mode2_m, h2_m, hh2_m, a2_m, b2_m, u2_m, tag_m} = in_m;
+
   reg                  valid_q1;
   reg [3*PrW-1:0]      pr_q1;
   reg [TW-1:0]         t_q1;
@@ -75,19 +108,20 @@ module rpu_candidate #(
   genvar c;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_pr
-      wire signed [CoordW-1:0]  ac  = a_i[c*CoordW +: CoordW];
-      wire signed [DW-1:0]      abc = ab_i[c*DW +: DW];
-      wire signed [DW+MW-1:0]   prod = abc * m_s;
-      wire signed [DW+MW-1:0]   step = prod >>> N;  // floor
-      wire signed [PrW-1:0]     prc = {{(PrW-CoordW){ac[CoordW-1]}}, ac} + step[PrW-1:0];
+      wire [DW+MW-1:0] prod;
+      wire             v_unused, t_unused;
+      rpu_mul #(.AW(DW), .BW(MW), .Signed(1), .TagW(1), .Latency(LatM)) u_abm (
+        .clk_i, .rst_ni, .valid_i, .a_i(ab_i[c*DW +: DW]), .b_i(m_s), .tag_i(1'b0),
+        .valid_o(v_unused), .p_o(prod), .tag_o(t_unused));
+      wire signed [CoordW-1:0] ac   = a_m[c*CoordW +: CoordW];
+      wire signed [DW+MW-1:0]  step = $signed(prod) >>> N;  // floor
+      wire signed [PrW-1:0]    prc  = {{(PrW-CoordW){ac[CoordW-1]}}, ac} + step[PrW-1:0];
       always @(posedge clk_i) pr_q1[c*PrW +: PrW] <= prc;
-      wire unused_step = ^step[DW+MW-1:PrW];
+      wire unused_step = ^{step[DW+MW-1:PrW], v_unused, t_unused};
     end
   endgenerate
-  wire signed [TW-1:0]    alpha = alpha_i;
-  wire signed [TW-1:0]    beta  = beta_i;
-  wire signed [TW+MW-1:0] bm    = beta * m_s;
-  wire signed [TW+MW-1:0] bstep = bm >>> N;
+  wire signed [TW-1:0]    alpha = alpha_m;
+  wire signed [TW+MW-1:0] bstep = $signed(bm) >>> N;
   wire signed [TW+MW:0]   tsum  = {{(MW+1){alpha[TW-1]}}, alpha} + {bstep[TW+MW-1], bstep};
   wire signed [TW+MW:0]   tmax  = {{(MW+1){1'b0}}, 1'b0, {(TW-1){1'b1}}};
   wire signed [TW+MW:0]   tmin  = {{(MW+1){1'b1}}, 1'b1, {(TW-1){1'b0}}};
@@ -95,49 +129,51 @@ module rpu_candidate #(
   wire                    t_lo  = tsum < tmin;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) valid_q1 <= 1'b0;
-    else         valid_q1 <= valid_i;
+    else         valid_q1 <= mt_valid;
   end
   always @(posedge clk_i) begin
     t_q1   <= t_hi ? tmax[TW-1:0] : t_lo ? tmin[TW-1:0] : tsum[TW-1:0];
     ovf_q1 <= t_hi | t_lo;
-    tag_q1 <= tag_i;
+    tag_q1 <= tag_m;
   end
 
   // ---- the two guides; the candidate's context (and the segment fields the curve point needs
-  //      later) ride in guide 1's tag ----
+  //      later) ride in the guide pair's tag ----
   localparam integer SegW   = 3*CoordW + 3*DW + 6*UW;  // p1, d, u1, u2
   localparam integer G1TagW = SegW + 3*PrW + TW + 1 + TagW;
   reg [SegW-1:0] seg_q1;
   reg [L2W-1:0]  l2_q1;
   reg [1:0]      mode1_q1, mode2_q1;
   reg [HW-1:0]   h1_q1, h2_q1;
+  reg [RadW-1:0] hh1_q1, hh2_q1;
   reg [CoordW-1:0] a1_q1, a2_q1;
   reg [TFrac-1:0]  b1_q1, b2_q1;
   always @(posedge clk_i) begin
-    seg_q1   <= {p1_i, d_i, u1_i, u2_i};
-    l2_q1    <= l2_i;
-    mode1_q1 <= mode1_i;
-    h1_q1    <= h1_i;
-    a1_q1    <= a1_i;
-    b1_q1    <= b1_i;
-    mode2_q1 <= mode2_i;
-    h2_q1    <= h2_i;
-    a2_q1    <= a2_i;
-    b2_q1    <= b2_i;
+    seg_q1   <= {p1_m, d_m, u1_m, u2_m};
+    l2_q1    <= l2_m;
+    mode1_q1 <= mode1_m;
+    h1_q1    <= h1_m;
+    hh1_q1   <= hh1_m;
+    a1_q1    <= a1_m;
+    b1_q1    <= b1_m;
+    mode2_q1 <= mode2_m;
+    h2_q1    <= h2_m;
+    hh2_q1   <= hh2_m;
+    a2_q1    <= a2_m;
+    b2_q1    <= b2_m;
   end
   wire [G1TagW-1:0] g1_tag_out;
-  wire              g1_valid, g2_valid, g1_ovf, g2_ovf;
+  wire              g1_valid, g_ovf;
   wire [GW-1:0]     g1, g2;
-  wire [TFrac-2:0]  w1, w2;
-  wire              g2_tag_out;
-  rpu_guide #(.CoordW(CoordW), .TFrac(TFrac), .SqrtW(SqrtW), .TagW(G1TagW)) u_guide1 (
-    .clk_i, .rst_ni, .valid_i(valid_q1), .t_i(t_q1), .mode_i(mode1_q1), .h_i(h1_q1), .a_i(a1_q1),
-    .b_i(b1_q1), .l2_i(l2_q1), .tag_i({seg_q1, pr_q1, t_q1, ovf_q1, tag_q1}),
-    .valid_o(g1_valid), .g_o(g1), .w_o(w1), .ovf_o(g1_ovf), .tag_o(g1_tag_out));
-  rpu_guide #(.CoordW(CoordW), .TFrac(TFrac), .SqrtW(SqrtW), .TagW(1)) u_guide2 (
-    .clk_i, .rst_ni, .valid_i(valid_q1), .t_i(t_q1), .mode_i(mode2_q1), .h_i(h2_q1), .a_i(a2_q1),
-    .b_i(b2_q1), .l2_i(l2_q1), .tag_i(1'b0),
-    .valid_o(g2_valid), .g_o(g2), .w_o(w2), .ovf_o(g2_ovf), .tag_o(g2_tag_out));
+  wire [TFrac-2:0]  w_unused;
+  rpu_guide_pair #(.CoordW(CoordW), .TFrac(TFrac), .SqrtW(SqrtW), .HhIn(1), .TagW(G1TagW))
+    u_guides (
+    .clk_i, .rst_ni, .valid_i(valid_q1), .t_i(t_q1), .l2_i(l2_q1),
+    .mode1_i(mode1_q1), .h1_i(h1_q1), .hh1_i(hh1_q1), .a1_i(a1_q1), .b1_i(b1_q1),
+    .mode2_i(mode2_q1), .h2_i(h2_q1), .hh2_i(hh2_q1), .a2_i(a2_q1), .b2_i(b2_q1),
+    .tag_i({seg_q1, pr_q1, t_q1, ovf_q1, tag_q1}),
+    .valid_o(g1_valid), .g1_o(g1), .g2_o(g2), .w_o(w_unused), .ovf_o(g_ovf),
+    .tag_o(g1_tag_out));
   wire [SegW-1:0]  seg_g = g1_tag_out[G1TagW-1 -: SegW];
   wire [3*PrW-1:0] pr_g = g1_tag_out[G1TagW-SegW-1 -: 3*PrW];
   wire [3*CoordW-1:0] p1_g = seg_g[SegW-1 -: 3*CoordW];
@@ -145,9 +181,9 @@ module rpu_candidate #(
   wire [3*UW-1:0]     u1_g = seg_g[6*UW-1 -: 3*UW];
   wire [3*UW-1:0]     u2_g = seg_g[3*UW-1:0];
   wire [TW-1:0]    t_g  = g1_tag_out[TW+1+TagW-1 -: TW];
-  wire             ovf_g = g1_tag_out[TagW] | g1_ovf | g2_ovf;
+  wire             ovf_g = g1_tag_out[TagW] | g_ovf;
   wire [TagW-1:0]  tag_g = g1_tag_out[TagW-1:0];
-  wire unused_guide = ^{g2_valid, w1, w2, g2_tag_out};
+  wire unused_guide = ^w_unused;
 
   // ---- curve point ----
   localparam integer CpTagW = 3*PrW + TW + 1 + TagW;
@@ -163,21 +199,61 @@ module rpu_candidate #(
   wire             ovf_c = cp_tag[TagW];
   wire [TagW-1:0]  tag_c = cp_tag[TagW-1:0];
 
-  // ---- |pr − X|², saturated to Md2W bits ----
+  // ---- |pr − X|²: three squares (rpu_mul), then two sums, saturated to Md2W bits ----
   localparam integer DfW = CoordW + 4;      // pr − X
   localparam integer SqW = 2 * DfW + 2;     // sum of three squares
-  wire [SqW-1:0] sq [0:2];
+  localparam integer ExW = 3*XW + 3*PrW + TW + 1 + TagW;
+  wire [2*DfW-1:0] sq [0:2];
+  wire             sq_valid;
+  wire [ExW-1:0]   sq_tag;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_diff
       wire signed [PrW-1:0] prc = pr_c[c*PrW +: PrW];
       wire signed [XW-1:0]  xc  = x_cp[c*XW +: XW];
       wire signed [DfW-1:0] df  = {{(DfW-PrW){prc[PrW-1]}}, prc} - {{(DfW-XW){xc[XW-1]}}, xc};
-      wire signed [2*DfW-1:0] df2 = df * df;
-      assign sq[c] = {2'b00, df2};
+      if (c == 0) begin : g_carry
+        rpu_mul #(.AW(DfW), .BW(DfW), .Signed(1), .TagW(ExW)) u_sq (
+          .clk_i, .rst_ni, .valid_i(cp_valid), .a_i(df), .b_i(df),
+          .tag_i({x_cp, pr_c, t_c, ovf_c, tag_c}), .valid_o(sq_valid), .p_o(sq[c]),
+          .tag_o(sq_tag));
+      end else begin : g_plain
+        // The third square arrives one cycle later, when the first two are summed (its extra
+        // cycle is an operand delay inside rpu_mul, so the sum starts from its flip-flops).
+        wire v_unused, t_unused;
+        rpu_mul #(.AW(DfW), .BW(DfW), .Signed(1), .TagW(1),
+                  .Latency(c == 2 ? rpu_mul_latency(DfW, DfW, 1, 24, 17) + 1 : 0)) u_sq (
+          .clk_i, .rst_ni, .valid_i(cp_valid), .a_i(df), .b_i(df), .tag_i(1'b0),
+          .valid_o(v_unused), .p_o(sq[c]), .tag_o(t_unused));
+        wire unused_sq_ctl = ^{v_unused, t_unused};
+      end
     end
   endgenerate
-  wire [SqW-1:0]  md2_full = sq[0] + sq[1] + sq[2];
-  wire            md2_big  = |md2_full[SqW-1:Md2W];
+  // Two adds, one register after each (a square is ≥ 0: its top bit is 0).
+  reg             valid_s;
+  reg [SqW-1:0]   s01_s;
+  reg [ExW-1:0]   ex_s;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_s <= 1'b0;
+    else         valid_s <= sq_valid;
+  end
+  always @(posedge clk_i) begin
+    s01_s <= {2'b00, sq[0]} + {2'b00, sq[1]};
+    ex_s  <= sq_tag;
+  end
+  // The full sum, registered; then the saturation to Md2W bits in a stage of its own (a 58-bit
+  // carry chain and the saturating mux do not fit one 4 ns stage together).
+  reg             valid_f;
+  reg [SqW-1:0]   md2_f;
+  reg [ExW-1:0]   ex_f;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_f <= 1'b0;
+    else         valid_f <= valid_s;
+  end
+  always @(posedge clk_i) begin
+    md2_f <= s01_s + {2'b00, sq[2]};
+    ex_f  <= ex_s;
+  end
+  wire            md2_big  = |md2_f[SqW-1:Md2W];
   reg             valid_q2;
   reg [Md2W-1:0]  md2_q2;
   reg             ovf_q2;
@@ -187,15 +263,13 @@ module rpu_candidate #(
   reg [TagW-1:0]  tag_q2;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) valid_q2 <= 1'b0;
-    else         valid_q2 <= cp_valid;
+    else         valid_q2 <= valid_f;
   end
   always @(posedge clk_i) begin
-    md2_q2 <= md2_big ? {Md2W{1'b1}} : md2_full[Md2W-1:0];
-    ovf_q2 <= ovf_c | md2_big;
-    x_q2   <= x_cp;
-    pr_q2  <= pr_c;
-    t_q2   <= t_c;
-    tag_q2 <= tag_c;
+    md2_q2 <= md2_big ? {Md2W{1'b1}} : md2_f[Md2W-1:0];
+    {x_q2, pr_q2, t_q2} <= ex_f[ExW-1 -: 3*XW + 3*PrW + TW];
+    ovf_q2 <= ex_f[TagW] | md2_big;
+    tag_q2 <= ex_f[TagW-1:0];
   end
 
   // ---- md: the square root (seed metric) or the square itself ----
@@ -224,7 +298,6 @@ module rpu_candidate #(
       assign tag_o   = tag_q2;
     end
   endgenerate
-  wire unused_sq = ^{sq[0][SqW-1:SqW-2], sq[1][SqW-1:SqW-2], sq[2][SqW-1:SqW-2]};
 endmodule
 
 `default_nettype wire

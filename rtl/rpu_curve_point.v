@@ -2,8 +2,12 @@
 // `curve_point_unit`), per component:
 //   X = p1 + floor(d·t / 2^FT) + floor(u1·G1 / 2^FU) + floor(u2·G2 / 2^FU)
 //   G1 = floor(g1·(2^FT − t) / 2^FT),  G2 = floor(g2·t / 2^FT)
-// Fixed latency of 3 cycles (products of t; products of u; the sum), one operand per cycle, no
-// stall; `tag_i` comes out unchanged with the result.
+// Every product is an rpu_mul (DSP-sized tiles, registered; rpu_mul_latency.vh). Pipeline:
+//   G1 = g1·(2^FT − t), G2 = g2·t, d·t          rpu_mul 26×28, 26×27, 25×27: LatG (4)
+//   u1·G1, u2·G2 | p1 + floor(d·t)              rpu_mul 18×29: LatU (3) | d·t padded, one add
+//   X = p(t) + the two guide terms              1
+// Latency = LatG + LatU + 1 cycles (8 at the defaults), one operand per cycle, no stall;
+// `tag_i` comes out unchanged with the result.
 //
 // Widths: the products and the floors are exact for every port value (G1, G2: CW+5 bits). X is
 // CW+3 bits signed (docs/fixed-point.md) and the sum is taken modulo 2^(CW+3), which is the
@@ -24,7 +28,7 @@ module rpu_curve_point #(
   parameter integer TW = TFrac + 3,     // t: Q(3.FT)
   parameter integer DW = CoordW + 1,    // d = p2 − p1
   parameter integer UW = UnitFrac + 2,  // u: Q(2.FU)
-  parameter integer GW = CoordW + 2,    // g1, g2 (rpu_guide's g_o)
+  parameter integer GW = CoordW + 2,    // g1, g2 (rpu_guide_pair's g1_o, g2_o)
   parameter integer XW = CoordW + 3     // X
 ) (
   input  wire              clk_i,
@@ -44,7 +48,6 @@ module rpu_curve_point #(
 );
   localparam integer OmW = TW + 1;       // 2^FT − t ∈ (−3, 5]·2^FT
   localparam integer GkW = CoordW + 5;   // G1 ∈ [−10, 10)·2^CW, G2 ∈ [−8, 8]·2^CW
-  localparam integer DtW = CoordW + 4;   // floor(d·t) ∈ [−4, 4]·2^CW
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_curve_point: CoordW must be in 12..40");
@@ -53,92 +56,96 @@ module rpu_curve_point #(
     if (TagW < 1) $fatal(1, "rpu_curve_point: TagW must be >= 1");
   end
 
-  // ---- stage 1: G1, G2 and floor(d·t) (signed products, explicitly sign-extended) ----
-  wire [OmW-1:0]      one = {{(OmW - TFrac - 1){1'b0}}, 1'b1, {TFrac{1'b0}}};
-  wire [OmW-1:0]      omt = one - {t_i[TW-1], t_i};  // 2^FT − t, exact
-  wire signed [GW+OmW-1:0] g1omt = $signed({{OmW{g1_i[GW-1]}}, g1_i}) *
-                                   $signed({{GW{omt[OmW-1]}}, omt});
-  wire signed [GW+TW-1:0]  g2t   = $signed({{TW{g2_i[GW-1]}}, g2_i}) *
-                                   $signed({{GW{t_i[TW-1]}}, t_i});
+`include "rpu_mul_latency.vh"
+  localparam integer LatG = rpu_mul_latency(GW, OmW, 1, 24, 17) > rpu_mul_latency(GW, TW, 1, 24, 17)
+                          ? rpu_mul_latency(GW, OmW, 1, 24, 17) : rpu_mul_latency(GW, TW, 1, 24, 17);
+  localparam integer LatU = rpu_mul_latency(UW, GkW, 1, 24, 17);
+  localparam integer LatD = rpu_mul_latency(DW, TW, 1, 24, 17);
+  // The unit's latency (what the enclosing units count on).
+  /* verilator lint_off UNUSEDPARAM */
+  localparam integer Latency = LatG + LatU + 1;
+  /* verilator lint_on UNUSEDPARAM */
+
+  initial begin
+    if (LatD > LatG + LatU - 1) $fatal(1, "rpu_curve_point: internal: d·t slower than the guides");
+  end
+
+  // ---- G1 = floor(g1·(2^FT − t) / 2^FT), G2 = floor(g2·t / 2^FT); u1, u2 and the tag ride along ----
+  wire [OmW-1:0] one = {{(OmW - TFrac - 1){1'b0}}, 1'b1, {TFrac{1'b0}}};
+  wire [OmW-1:0] omt = one - {t_i[TW-1], t_i};  // 2^FT − t, exact
+  localparam integer GTagW = TagW + 6 * UW;
+  wire                 g_valid, g2_valid_unused, g2_tag_unused;
+  wire [GW+OmW-1:0]    g1omt;
+  wire [GW+TW-1:0]     g2t;
+  wire [GTagW-1:0]     g_tag;
+  rpu_mul #(.AW(GW), .BW(OmW), .Signed(1), .TagW(GTagW), .Latency(LatG)) u_g1 (
+    .clk_i, .rst_ni, .valid_i, .a_i(g1_i), .b_i(omt), .tag_i({tag_i, u1_i, u2_i}),
+    .valid_o(g_valid), .p_o(g1omt), .tag_o(g_tag));
+  rpu_mul #(.AW(GW), .BW(TW), .Signed(1), .TagW(1), .Latency(LatG)) u_g2 (
+    .clk_i, .rst_ni, .valid_i, .a_i(g2_i), .b_i(t_i), .tag_i(1'b0),
+    .valid_o(g2_valid_unused), .p_o(g2t), .tag_o(g2_tag_unused));
   // |g1·(2^FT − t)| ≤ 5·2^(CW+1+FT): the floor fits GkW bits, the product's top bit is a sign copy.
-  wire [GkW-1:0]      G1 = g1omt[TFrac+GkW-1:TFrac];
-  wire [GkW-1:0]      G2 = g2t[TFrac+GkW-1:TFrac];
+  wire [GkW-1:0]   G1 = g1omt[TFrac+GkW-1:TFrac];
+  wire [GkW-1:0]   G2 = g2t[TFrac+GkW-1:TFrac];
+  wire [TagW-1:0]  tag_g = g_tag[GTagW-1 -: TagW];
+  wire [3*UW-1:0]  u1_g  = g_tag[6*UW-1 -: 3*UW];
+  wire [3*UW-1:0]  u2_g  = g_tag[3*UW-1:0];
 
-  reg               valid_1q;
-  reg [3*CoordW-1:0] p1_1q;
-  reg [3*DtW-1:0]   dt_1q;
-  reg [3*UW-1:0]    u1_1q, u2_1q;
-  reg [GkW-1:0]     G1_1q, G2_1q;
-  reg [TagW-1:0]    tag_1q;
-
+  // ---- floor(u1·G1), floor(u2·G2) and p(t) = p1 + floor(d·t), each modulo 2^XW ----
+  wire [3*XW-1:0] ug1, ug2;
+  reg  [3*XW-1:0] pt_q;
+  wire [TagW-1:0] tag_u;
+  wire            u_valid;
   genvar c;
   generate
-    for (c = 0; c < 3; c = c + 1) begin : g_dt
-      wire [DW-1:0] d = d_i[c*DW +: DW];
-      wire signed [DW+TW-1:0] dt_p = $signed({{TW{d[DW-1]}}, d}) * $signed({{DW{t_i[TW-1]}}, t_i});
-      always @(posedge clk_i) dt_1q[c*DtW +: DtW] <= dt_p[TFrac+DtW-1:TFrac];
-      wire unused_dt = ^dt_p[TFrac-1:0];
-    end
-  endgenerate
-
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_1q <= 1'b0;
-    else         valid_1q <= valid_i;
-  end
-  always @(posedge clk_i) begin
-    p1_1q  <= p1_i;
-    u1_1q  <= u1_i;
-    u2_1q  <= u2_i;
-    G1_1q  <= G1;
-    G2_1q  <= G2;
-    tag_1q <= tag_i;
-  end
-
-  // ---- stage 2: p(t) = p1 + floor(d·t), floor(u1·G1), floor(u2·G2), each modulo 2^XW ----
-  reg               valid_2q;
-  reg [3*XW-1:0]    pt_2q, ug1_2q, ug2_2q;
-  reg [TagW-1:0]    tag_2q;
-  generate
     for (c = 0; c < 3; c = c + 1) begin : g_term
-      wire [CoordW-1:0] p1 = p1_1q[c*CoordW +: CoordW];
-      wire [DtW-1:0]    dt = dt_1q[c*DtW +: DtW];
-      wire [UW-1:0]     u1 = u1_1q[c*UW +: UW];
-      wire [UW-1:0]     u2 = u2_1q[c*UW +: UW];
-      // The sum's low XW bits: the terms' low XW bits (sign extension of p1, truncation of dt).
-      wire [XW-1:0]     pt = {{(XW - CoordW){p1[CoordW-1]}}, p1} + dt[XW-1:0];
-      wire signed [UW+GkW-1:0] ug1_p = $signed({{GkW{u1[UW-1]}}, u1}) *
-                                       $signed({{UW{G1_1q[GkW-1]}}, G1_1q});
-      wire signed [UW+GkW-1:0] ug2_p = $signed({{GkW{u2[UW-1]}}, u2}) *
-                                       $signed({{UW{G2_1q[GkW-1]}}, G2_1q});
-      always @(posedge clk_i) begin
-        pt_2q[c*XW +: XW]  <= pt;
-        ug1_2q[c*XW +: XW] <= ug1_p[UnitFrac+XW-1:UnitFrac];
-        ug2_2q[c*XW +: XW] <= ug2_p[UnitFrac+XW-1:UnitFrac];
+      // d·t, padded so that p(t) is registered when the guide terms arrive; p1 rides along.
+      wire [DW+TW-1:0]  dt_p;
+      wire [CoordW-1:0] p1;
+      wire              dt_v_unused;
+      rpu_mul #(.AW(DW), .BW(TW), .Signed(1), .TagW(CoordW), .Latency(LatG + LatU - 1)) u_dt (
+        .clk_i, .rst_ni, .valid_i, .a_i(d_i[c*DW +: DW]), .b_i(t_i),
+        .tag_i(p1_i[c*CoordW +: CoordW]), .valid_o(dt_v_unused), .p_o(dt_p), .tag_o(p1));
+      // The sum's low XW bits: the terms' low XW bits (sign extension of p1, floor(d·t) mod 2^XW).
+      always @(posedge clk_i)
+        pt_q[c*XW +: XW] <= {{(XW - CoordW){p1[CoordW-1]}}, p1} + dt_p[TFrac +: XW];
+
+      wire [UW+GkW-1:0] ug1_p, ug2_p;
+      wire              v1, v2_unused, t2_unused;
+      wire [TagW-1:0]   t1;
+      rpu_mul #(.AW(UW), .BW(GkW), .Signed(1), .TagW(TagW)) u_ug1 (
+        .clk_i, .rst_ni, .valid_i(g_valid), .a_i(u1_g[c*UW +: UW]), .b_i(G1), .tag_i(tag_g),
+        .valid_o(v1), .p_o(ug1_p), .tag_o(t1));
+      rpu_mul #(.AW(UW), .BW(GkW), .Signed(1), .TagW(1)) u_ug2 (
+        .clk_i, .rst_ni, .valid_i(g_valid), .a_i(u2_g[c*UW +: UW]), .b_i(G2), .tag_i(1'b0),
+        .valid_o(v2_unused), .p_o(ug2_p), .tag_o(t2_unused));
+      assign ug1[c*XW +: XW] = ug1_p[UnitFrac+XW-1:UnitFrac];
+      assign ug2[c*XW +: XW] = ug2_p[UnitFrac+XW-1:UnitFrac];
+      if (c == 0) begin : g_ctl
+        assign u_valid = v1;
+        assign tag_u   = t1;
+      end else begin : g_no_ctl
+        wire unused_ctl = ^{v1, t1};
       end
-      wire unused_term = ^{dt[DtW-1:XW], ug1_p[UW+GkW-1:UnitFrac+XW], ug1_p[UnitFrac-1:0],
+      wire unused_term = ^{dt_v_unused, v2_unused, t2_unused, dt_p[DW+TW-1:TFrac+XW],
+                           dt_p[TFrac-1:0], ug1_p[UW+GkW-1:UnitFrac+XW], ug1_p[UnitFrac-1:0],
                            ug2_p[UW+GkW-1:UnitFrac+XW], ug2_p[UnitFrac-1:0]};
     end
   endgenerate
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_2q <= 1'b0;
-    else         valid_2q <= valid_1q;
-  end
-  always @(posedge clk_i) tag_2q <= tag_1q;
-
-  // ---- stage 3: X = p(t) + floor(u1·G1) + floor(u2·G2) (modulo 2^XW, exact in range) ----
+  // ---- X = p(t) + floor(u1·G1) + floor(u2·G2) (modulo 2^XW, exact in range) ----
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_sum
       always @(posedge clk_i)
-        x_o[c*XW +: XW] <= pt_2q[c*XW +: XW] + ug1_2q[c*XW +: XW] + ug2_2q[c*XW +: XW];
+        x_o[c*XW +: XW] <= pt_q[c*XW +: XW] + ug1[c*XW +: XW] + ug2[c*XW +: XW];
     end
   endgenerate
 
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= valid_2q;
+    else         valid_o <= u_valid;
   end
-  always @(posedge clk_i) tag_o <= tag_2q;
+  always @(posedge clk_i) tag_o <= tag_u;
 
   wire unused_products = ^{g1omt[GW+OmW-1:TFrac+GkW], g1omt[TFrac-1:0], g2t[TFrac-1:0]};
 endmodule

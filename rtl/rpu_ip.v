@@ -1,5 +1,7 @@
 // rpu_ip: the K-step iterative process (ALGORITHM 1.2 step 3), twin of rpu::ref::ip_process.
-// A start unit evaluates the candidates τ = 0 and τ = 1; then
+// An input stage squares the guide heights once per pair (h1², h2², rpu_mul: the candidates'
+// guide radicands h² + L²w need them; no candidate multiplies h); a start unit evaluates the
+// candidates τ = 0 and τ = 1; then
 //   Unrolled = 1: K rpu_ip_step units in a pipeline, each with its k wired in: one pair per
 //                 cycle, fixed latency, ready_o = 1;
 //   Unrolled = 0: one rpu_ip_step unit reused K times: items circulate through it, a returning
@@ -28,6 +30,7 @@ module rpu_ip #(
   parameter integer UW   = UnitFrac + 2,
   parameter integer HW   = CoordW + 5,
   parameter integer L2W  = 2 * CoordW + 3,
+  parameter integer RadW = 2 * CoordW + 10,
   parameter integer XW   = CoordW + 3,
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
   parameter integer StW  = N + TW + 3*XW + MdW + MdW
@@ -60,18 +63,81 @@ module rpu_ip #(
   output wire [CtxW-1:0]     ctx_o
 );
   localparam integer KW = 8;
-  // Everything a step needs, as one bundle: interval, segment, the caller's context, overflow.
-  localparam integer PairW = 3*CoordW + 3*DW + 2*TW + 3*CoordW + 3*DW + L2W
-                           + 2 * (2 + HW + CoordW + TFrac + 3*UW);
+  // Everything a step needs, as one bundle {pair, caller's context, overflow}; the pair's fields
+  // from the top: A, AB, α, β, p1, d, L², then per guide {mode, h, h², a, b, u}.
+  localparam integer GdW   = 2 + HW + RadW + CoordW + TFrac + 3*UW;
+  localparam integer PairW = 3*CoordW + 3*DW + 2*TW + 3*CoordW + 3*DW + L2W + 2 * GdW;
   localparam integer BunW  = PairW + CtxW + 1;
+  // Field offsets in a bundle (LSB of each field), from the overflow bit up.
+  localparam integer OffG2    = CtxW + 1;
+  localparam integer OffG1    = OffG2 + GdW;
+  localparam integer OffL2    = OffG1 + GdW;
+  localparam integer OffD     = OffL2 + L2W;
+  localparam integer OffP1    = OffD + 3*DW;
+  localparam integer OffBeta  = OffP1 + 3*CoordW;
+  localparam integer OffAlpha = OffBeta + TW;
+  localparam integer OffAB    = OffAlpha + TW;
+  localparam integer OffA     = OffAB + 3*DW;
+  // Within a guide field: {mode, h, h², a, b, u}.
+  localparam integer GOffU    = 0;
+  localparam integer GOffB    = GOffU + 3*UW;
+  localparam integer GOffA    = GOffB + TFrac;
+  localparam integer GOffHh   = GOffA + CoordW;
+  localparam integer GOffH    = GOffHh + RadW;
+  localparam integer GOffMode = GOffH + HW;
 
   initial begin
     if (K > 255) $fatal(1, "rpu_ip: N/N1 must be below 256");
     if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_ip: FifoLog2 must be in 2..12");
+    if (OffA + 3*CoordW != BunW) $fatal(1, "rpu_ip: internal: bundle offsets");
   end
 
-  wire [PairW-1:0] pair_in = {a_i, ab_i, alpha_i, beta_i, p1_i, d_i, l2_i,
-                              mode1_i, h1_i, a1_i, b1_i, u1_i, mode2_i, h2_i, a2_i, b2_i, u2_i};
+  // ---- input stage: h1², h2² (exact, RadW = 2·HW bits: two rpu_mul), the pair and the
+  //      caller's context riding in the first one's tag ----
+  localparam integer InTagW = PairW - 2 * RadW + CtxW;
+  wire               valid_0q, hh2_v_unused, hh2_t_unused;
+  wire [RadW-1:0]    hh1, hh2;
+  wire [InTagW-1:0]  in_0q;
+  rpu_mul #(.AW(HW), .BW(HW), .Signed(0), .TagW(InTagW)) u_hh1 (
+    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .a_i(h1_i), .b_i(h1_i),
+    .tag_i({a_i, ab_i, alpha_i, beta_i, p1_i, d_i, l2_i, mode1_i, h1_i, a1_i, b1_i, u1_i,
+            mode2_i, h2_i, a2_i, b2_i, u2_i, ctx_i}),
+    .valid_o(valid_0q), .p_o(hh1), .tag_o(in_0q));
+  rpu_mul #(.AW(HW), .BW(HW), .Signed(0), .TagW(1)) u_hh2 (
+    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .a_i(h2_i), .b_i(h2_i), .tag_i(1'b0),
+    .valid_o(hh2_v_unused), .p_o(hh2), .tag_o(hh2_t_unused));
+  wire unused_hh = ^{hh2_v_unused, hh2_t_unused};
+  // Re-insert h² after each h: {.., mode1, h1, h1², a1, b1, u1, mode2, h2, h2², a2, b2, u2}.
+  localparam integer G2TW = CoordW + TFrac + 3*UW;         // a, b, u of a guide
+  localparam integer HeadW = PairW - 2 * GdW;              // A .. L²
+  wire [HeadW-1:0]  in_head = in_0q[InTagW-1 -: HeadW];
+  wire [1+HW:0]     in_mh1  = in_0q[InTagW-HeadW-1 -: 2 + HW];
+  wire [G2TW-1:0]   in_g1   = in_0q[InTagW-HeadW-2-HW-1 -: G2TW];
+  wire [1+HW:0]     in_mh2  = in_0q[CtxW+G2TW+2+HW-1 -: 2 + HW];
+  wire [G2TW-1:0]   in_g2   = in_0q[CtxW+G2TW-1 -: G2TW];
+  wire [PairW-1:0]  pair_0q = {in_head, in_mh1, hh1, in_g1, in_mh2, hh2, in_g2};
+  wire [CtxW-1:0]   ctx_0q  = in_0q[CtxW-1:0];
+
+  // Unpacking a bundle {pair, ctx, ovf} into a step's or a candidate's ports.
+  `define RPU_IP_GUIDE_PORTS(B, G, N) \
+    .mode``N``_i(B[(G) + GOffMode +: 2]), \
+    .h``N``_i(B[(G) + GOffH +: HW]), \
+    .hh``N``_i(B[(G) + GOffHh +: RadW]), \
+    .a``N``_i(B[(G) + GOffA +: CoordW]), \
+    .b``N``_i(B[(G) + GOffB +: TFrac]), \
+    .u``N``_i(B[(G) + GOffU +: 3*UW])
+  `define RPU_IP_STEP_PORTS(B) \
+    .a_i(B[OffA +: 3*CoordW]), \
+    .ab_i(B[OffAB +: 3*DW]), \
+    .alpha_i(B[OffAlpha +: TW]), \
+    .beta_i(B[OffBeta +: TW]), \
+    .p1_i(B[OffP1 +: 3*CoordW]), \
+    .d_i(B[OffD +: 3*DW]), \
+    .l2_i(B[OffL2 +: L2W]), \
+    `RPU_IP_GUIDE_PORTS(B, OffG1, 1), \
+    `RPU_IP_GUIDE_PORTS(B, OffG2, 2)
+
+  wire [BunW-1:0] bun_0 = {pair_0q, ctx_0q, 1'b0};
 
   // ---- start unit: candidates τ = 0 (carries the bundle) and τ = 1 ----
   wire            s_valid, s_ovf0, s_ovf1;
@@ -79,44 +145,24 @@ module rpu_ip #(
   wire [3*XW-1:0] s_x0, s_x1_unused;
   wire [MdW-1:0]  s_md0, s_md1;
   wire [BunW-1:0] s_bun;
-  wire            s_valid1_unused, s_tag1_unused;
+  wire            s_valid1_unused;
+  wire [BunW-1:0] s_tag1_unused;
   wire [3*(CoordW+2)-1:0] s_pr0_unused, s_pr1_unused;
   rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                   .Metric(Metric), .TagW(BunW)) u_start0 (
-    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .m_i({(N+1){1'b0}}), .a_i, .ab_i, .alpha_i,
-    .beta_i, .p1_i, .d_i, .l2_i, .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i,
-    .b2_i, .u2_i, .tag_i({pair_in, ctx_i, 1'b0}), .valid_o(s_valid), .t_o(s_t0), .x_o(s_x0),
+    .clk_i, .rst_ni, .valid_i(valid_0q), .m_i({(N+1){1'b0}}), `RPU_IP_STEP_PORTS(bun_0),
+    .tag_i(bun_0), .valid_o(s_valid), .t_o(s_t0), .x_o(s_x0),
     .pr_o(s_pr0_unused), .md_o(s_md0), .ovf_o(s_ovf0), .tag_o(s_bun));
   rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                   .Metric(Metric), .TagW(1)) u_start1 (
-    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .m_i({1'b1, {N{1'b0}}}), .a_i, .ab_i, .alpha_i,
-    .beta_i, .p1_i, .d_i, .l2_i, .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i,
-    .b2_i, .u2_i, .tag_i(1'b0), .valid_o(s_valid1_unused), .t_o(s_t1_unused), .x_o(s_x1_unused),
-    .pr_o(s_pr1_unused), .md_o(s_md1), .ovf_o(s_ovf1), .tag_o(s_tag1_unused));
+    .clk_i, .rst_ni, .valid_i(valid_0q), .m_i({1'b1, {N{1'b0}}}), `RPU_IP_STEP_PORTS(bun_0),
+    .tag_i(1'b0), .valid_o(s_valid1_unused), .t_o(s_t1_unused), .x_o(s_x1_unused),
+    .pr_o(s_pr1_unused), .md_o(s_md1), .ovf_o(s_ovf1), .tag_o(s_tag1_unused[0]));
+  assign s_tag1_unused[BunW-1:1] = {(BunW-1){1'b0}};
   wire unused_start = ^{s_valid1_unused, s_t1_unused, s_x1_unused, s_tag1_unused, s_pr0_unused,
                         s_pr1_unused, s_bun[0]};
   wire [StW-1:0]  s_state = {{N{1'b0}}, s_t0, s_x0, s_md0, s_md1};
   wire [BunW-1:0] s_bundle = {s_bun[BunW-1:1], s_ovf0 | s_ovf1};
-
-  // Unpacking a bundle into the step's ports.
-  `define RPU_IP_STEP_PORTS(B) \
-    .a_i(B[BunW-1 -: 3*CoordW]), \
-    .ab_i(B[BunW-3*CoordW-1 -: 3*DW]), \
-    .alpha_i(B[BunW-3*CoordW-3*DW-1 -: TW]), \
-    .beta_i(B[BunW-3*CoordW-3*DW-TW-1 -: TW]), \
-    .p1_i(B[BunW-3*CoordW-3*DW-2*TW-1 -: 3*CoordW]), \
-    .d_i(B[BunW-6*CoordW-3*DW-2*TW-1 -: 3*DW]), \
-    .l2_i(B[BunW-6*CoordW-6*DW-2*TW-1 -: L2W]), \
-    .mode1_i(B[BunW-6*CoordW-6*DW-2*TW-L2W-1 -: 2]), \
-    .h1_i(B[BunW-6*CoordW-6*DW-2*TW-L2W-3 -: HW]), \
-    .a1_i(B[BunW-6*CoordW-6*DW-2*TW-L2W-HW-3 -: CoordW]), \
-    .b1_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-3 -: TFrac]), \
-    .u1_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-TFrac-3 -: 3*UW]), \
-    .mode2_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-TFrac-3*UW-3 -: 2]), \
-    .h2_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-HW-TFrac-3*UW-5 -: HW]), \
-    .a2_i(B[BunW-7*CoordW-6*DW-2*TW-L2W-2*HW-TFrac-3*UW-5 -: CoordW]), \
-    .b2_i(B[BunW-8*CoordW-6*DW-2*TW-L2W-2*HW-TFrac-3*UW-5 -: TFrac]), \
-    .u2_i(B[BunW-8*CoordW-6*DW-2*TW-L2W-2*HW-2*TFrac-3*UW-5 -: 3*UW])
 
   generate
     if (Unrolled != 0) begin : g_unrolled
@@ -150,11 +196,10 @@ module rpu_ip #(
       assign ctx_o   = bun[K*BunW+1 +: CtxW];
       wire unused_pair = ^bun[K*BunW+CtxW+1 +: PairW];
     end else begin : g_iterative
-      // Start FIFO: pairs leaving the start unit wait for a free slot of the step unit.
+      // Start FIFO: pairs leaving the start unit wait for a free slot of the step unit. Block
+      // RAM with a registered read (rpu_fifo); its output register adds one entry of room.
       localparam integer Depth = 1 << FifoLog2;
       localparam integer FW = StW + BunW;
-      reg [FW-1:0]       fifo_q [0:Depth-1];
-      reg [FifoLog2:0]   wr_q, rd_q;
       // Credits: pairs accepted and not yet taken by the step unit never exceed the FIFO depth.
       reg [FifoLog2:0]   owed_q;  // accepted, not yet popped into the ring
       wire               loop_valid;
@@ -164,25 +209,20 @@ module rpu_ip #(
       wire               loop_ovf;
       wire               tag_unused;
       wire               recirc   = loop_valid && (loop_k != K[KW-1:0]);
-      wire               fifo_any = wr_q != rd_q;
+      wire               fifo_any;
+      wire               fifo_wr_ready_unused;
+      wire [FW-1:0]      head;
       wire               pop      = fifo_any && !recirc;
       wire               accept   = valid_i && ready_o;
       assign ready_o = owed_q < Depth[FifoLog2:0];
       always @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) begin
-          wr_q   <= {(FifoLog2+1){1'b0}};
-          rd_q   <= {(FifoLog2+1){1'b0}};
-          owed_q <= {(FifoLog2+1){1'b0}};
-        end else begin
-          if (s_valid) wr_q <= wr_q + 1'b1;
-          if (pop)     rd_q <= rd_q + 1'b1;
-          owed_q <= owed_q + {{FifoLog2{1'b0}}, accept} - {{FifoLog2{1'b0}}, pop};
-        end
+        if (!rst_ni) owed_q <= {(FifoLog2+1){1'b0}};
+        else owed_q <= owed_q + {{FifoLog2{1'b0}}, accept} - {{FifoLog2{1'b0}}, pop};
       end
-      always @(posedge clk_i) begin
-        if (s_valid) fifo_q[wr_q[FifoLog2-1:0]] <= {s_state, s_bundle};
-      end
-      wire [FW-1:0]   head   = fifo_q[rd_q[FifoLog2-1:0]];
+      rpu_fifo #(.Width(FW), .Log2Depth(FifoLog2)) u_start_fifo (
+        .clk_i, .rst_ni, .wr_valid_i(s_valid), .wr_ready_o(fifo_wr_ready_unused),
+        .wr_data_i({s_state, s_bundle}), .rd_valid_o(fifo_any), .rd_ready_i(!recirc),
+        .rd_data_o(head));
       // The step unit's input: a returning item (its next k), else the FIFO head (k = 1).
       wire            in_v   = recirc || pop;
       wire [KW-1:0]   in_k   = recirc ? loop_k + 1'b1 : {{(KW-1){1'b0}}, 1'b1};
@@ -201,10 +241,11 @@ module rpu_ip #(
       assign state_o  = loop_st;
       assign ovf_o    = loop_bun[0] | loop_ovf;
       assign ctx_o    = loop_bun[1 +: CtxW];
-      wire unused_iter = ^{tag_unused, loop_bun[BunW-1 -: PairW]};
+      wire unused_iter = ^{tag_unused, fifo_wr_ready_unused, loop_bun[BunW-1 -: PairW]};
     end
   endgenerate
   `undef RPU_IP_STEP_PORTS
+  `undef RPU_IP_GUIDE_PORTS
 endmodule
 
 `default_nettype wire

@@ -4,7 +4,8 @@
 // go through a lowest-index argmin η, and the next state is
 //   τ' = τ + η·2^(N − N1·k),  lo' = candidate η (or lo),  hi'.md = md_{η+1} (or hi.md).
 // Step = k wired in (unrolled pipeline), or Step = 0: k comes with the item (iterative form).
-// The segment and interval context rides in candidate 1's tag. Fixed latency.
+// The segment and interval context rides in candidate 1's tag. Fixed latency: the candidate's,
+// then the pair sums (registered), then the compares and the select (registered).
 `default_nettype none
 
 module rpu_ip_step #(
@@ -27,6 +28,7 @@ module rpu_ip_step #(
   parameter integer UW   = UnitFrac + 2,
   parameter integer HW   = CoordW + 5,
   parameter integer L2W  = 2 * CoordW + 3,
+  parameter integer RadW = 2 * CoordW + 10,
   parameter integer XW   = CoordW + 3,
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
   parameter integer StW  = N + TW + 3*XW + MdW + MdW  // {tau, lo.t, lo.X, lo.md, hi.md}
@@ -45,11 +47,13 @@ module rpu_ip_step #(
   input  wire [L2W-1:0]      l2_i,
   input  wire [1:0]          mode1_i,
   input  wire [HW-1:0]       h1_i,
+  input  wire [RadW-1:0]     hh1_i,      // h1² (the caller computes it once per pair)
   input  wire [CoordW-1:0]   a1_i,
   input  wire [TFrac-1:0]    b1_i,
   input  wire [3*UW-1:0]     u1_i,
   input  wire [1:0]          mode2_i,
   input  wire [HW-1:0]       h2_i,
+  input  wire [RadW-1:0]     hh2_i,      // h2²
   input  wire [CoordW-1:0]   a2_i,
   input  wire [TFrac-1:0]    b2_i,
   input  wire [3*UW-1:0]     u2_i,
@@ -93,7 +97,8 @@ module rpu_ip_step #(
         rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                         .Metric(Metric), .TagW(SbW)) u_cand (
           .clk_i, .rst_ni, .valid_i, .m_i(m), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i, .d_i, .l2_i,
-          .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i, .b2_i, .u2_i,
+          .mode1_i, .h1_i, .hh1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .hh2_i, .a2_i, .b2_i,
+          .u2_i,
           .tag_i(sb_in), .valid_o(c_valid[j-1]), .t_o(c_t[(j-1)*TW +: TW]),
           .x_o(c_x[(j-1)*3*XW +: 3*XW]), .pr_o(pr_unused), .md_o(c_md[(j-1)*MdW +: MdW]),
           .ovf_o(c_ovf[j-1]), .tag_o(sb_out));
@@ -102,7 +107,8 @@ module rpu_ip_step #(
         rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                         .Metric(Metric), .TagW(1)) u_cand (
           .clk_i, .rst_ni, .valid_i, .m_i(m), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i, .d_i, .l2_i,
-          .mode1_i, .h1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .a2_i, .b2_i, .u2_i,
+          .mode1_i, .h1_i, .hh1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .hh2_i, .a2_i, .b2_i,
+          .u2_i,
           .tag_i(1'b0), .valid_o(c_valid[j-1]), .t_o(c_t[(j-1)*TW +: TW]),
           .x_o(c_x[(j-1)*3*XW +: 3*XW]), .pr_o(pr_unused), .md_o(c_md[(j-1)*MdW +: MdW]),
           .ovf_o(c_ovf[j-1]), .tag_o(tag_unused));
@@ -112,11 +118,43 @@ module rpu_ip_step #(
     end
   endgenerate
 
-  // After the candidates: unpack the side band.
-  wire [KW-1:0]   k_c     = sb_out[SbW-1 -: KW];
-  wire [StW-1:0]  st_c    = sb_out[SbW-KW-1 -: StW];
-  wire [CtxW-1:0] ctx_c   = sb_out[CtxW+TagW-1 -: CtxW];
-  wire [TagW-1:0] tag_c   = sb_out[TagW-1:0];
+  // ---- after the candidates: the pair sums sd_j = md_j + md_{j+1} (md_0 = lo.md, md_J = hi.md),
+  //      registered with everything the select needs, so the compares start from flip-flops ----
+  localparam integer StA = SbW - KW - 1;  // the state's top bit in the side band
+  wire [MdW-1:0] md_a [0:J];
+  assign md_a[0] = sb_out[StA-StW+2*MdW -: MdW];
+  assign md_a[J] = sb_out[StA-StW+MdW -: MdW];
+  generate
+    for (j = 1; j < J; j = j + 1) begin : g_md_a
+      assign md_a[j] = c_md[(j-1)*MdW +: MdW];
+    end
+  endgenerate
+  reg                    valid_r;
+  reg [SbW-1:0]          sb_r;
+  reg [(J-1)*TW-1:0]     c_t_r;
+  reg [(J-1)*3*XW-1:0]   c_x_r;
+  reg [(J-1)*MdW-1:0]    c_md_r;
+  reg [J-2:0]            c_ovf_r;
+  reg [MdW:0]            sd [0:J-1];
+  integer q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_r <= 1'b0;
+    else         valid_r <= c_valid[0];
+  end
+  always @(posedge clk_i) begin
+    sb_r    <= sb_out;
+    c_t_r   <= c_t;
+    c_x_r   <= c_x;
+    c_md_r  <= c_md;
+    c_ovf_r <= c_ovf;
+    for (q = 0; q < J; q = q + 1) sd[q] <= {1'b0, md_a[q]} + {1'b0, md_a[q+1]};
+  end
+
+  // Unpack the registered side band.
+  wire [KW-1:0]   k_c     = sb_r[SbW-1 -: KW];
+  wire [StW-1:0]  st_c    = sb_r[SbW-KW-1 -: StW];
+  wire [CtxW-1:0] ctx_c   = sb_r[CtxW+TagW-1 -: CtxW];
+  wire [TagW-1:0] tag_c   = sb_r[TagW-1:0];
   wire [N-1:0]    tau_c   = st_c[StW-1 -: N];
   wire [TW-1:0]   lo_t_c  = st_c[StW-N-1 -: TW];
   wire [3*XW-1:0] lo_x_c  = st_c[StW-N-TW-1 -: 3*XW];
@@ -124,61 +162,77 @@ module rpu_ip_step #(
   wire [MdW-1:0]  hi_md_c = st_c[MdW-1:0];
   wire [KW+7:0]   shift_c = N[KW+7:0] - N1[KW+7:0] * {8'd0, k_c};
 
-  // md_j, j = 0..J, and the lowest-index argmin of the pair sums (strict <: the first wins).
-  reg [MdW-1:0] md [0:J];
-  reg [MdW:0]   best;
-  reg [N1-1:0]  eta;
-  integer q;
+  // The lowest-index argmin as a one-hot vector: j wins when sd_j < sd_i for every i < j and
+  // sd_j ≤ sd_i for every i > j (exactly one j does). All J·(J−1)/2 compares run in parallel
+  // (one carry chain after the sums' register) instead of a serial chain; the next state is an
+  // AND-OR select by the one-hot.
+  wire [MdW-1:0] md [0:J];
+  assign md[0] = lo_md_c;
+  assign md[J] = hi_md_c;
+  generate
+    for (j = 1; j < J; j = j + 1) begin : g_md
+      assign md[j] = c_md_r[(j-1)*MdW +: MdW];
+    end
+  endgenerate
+  reg [J-1:0] win;
+  integer a, b;
   always @(*) begin
-    md[0] = lo_md_c;
-    md[J] = hi_md_c;
-    for (q = 1; q < J; q = q + 1) md[q] = c_md[(q-1)*MdW +: MdW];
-    best = {1'b0, md[0]} + {1'b0, md[1]};
-    eta  = {N1{1'b0}};
-    for (q = 1; q < J; q = q + 1) begin
+    for (a = 0; a < J; a = a + 1) begin
+      win[a] = 1'b1;
+      for (b = 0; b < J; b = b + 1) begin
 `ifdef RPU_FAULT_ARGMIN_TIE
-      // Deliberate fault for the co-simulation checker's own test: the last minimum wins.
-      if (({1'b0, md[q]} + {1'b0, md[q+1]}) <= best) begin
+        // Deliberate fault for the co-simulation checker's own test: the last minimum wins.
+        if (b < a && sd[a] > sd[b]) win[a] = 1'b0;
+        if (b > a && sd[a] >= sd[b]) win[a] = 1'b0;
 `else
-      if (({1'b0, md[q]} + {1'b0, md[q+1]}) < best) begin
+        if (b < a && sd[a] >= sd[b]) win[a] = 1'b0;
+        if (b > a && sd[a] > sd[b]) win[a] = 1'b0;
 `endif
-        best = {1'b0, md[q]} + {1'b0, md[q+1]};
-        eta  = q[N1-1:0];
       end
     end
   end
 
-  // The next state.
-  wire [N-1:0] tau_next = tau_c + ({{(N-N1){1'b0}}, eta} << shift_c);
-  reg  [TW-1:0]   lo_t_n;
-  reg  [3*XW-1:0] lo_x_n;
-  reg  [MdW-1:0]  lo_md_n, hi_md_n;
+  // The next state: τ' = τ + η·2^shift (the bits η lands on are zero in τ, so τ | that), and
+  // the winner's lo and hi fields, each an AND-OR over the one-hot.
+  reg [N-1:0]     tau_next;
+  reg [TW-1:0]    lo_t_n;
+  reg [3*XW-1:0]  lo_x_n;
+  reg [MdW-1:0]   lo_md_n, hi_md_n;
   integer e;
   always @(*) begin
-    e = {{(32-N1){1'b0}}, eta};
-    if (e == 0) begin
-      lo_t_n  = lo_t_c;
-      lo_x_n  = lo_x_c;
-    end else begin
-      lo_t_n  = c_t[(e-1)*TW +: TW];
-      lo_x_n  = c_x[(e-1)*3*XW +: 3*XW];
+    tau_next = {N{1'b0}};
+    lo_t_n   = {TW{1'b0}};
+    lo_x_n   = {3*XW{1'b0}};
+    lo_md_n  = {MdW{1'b0}};
+    hi_md_n  = {MdW{1'b0}};
+    for (e = 0; e < J; e = e + 1) begin
+      if (win[e]) begin
+        tau_next = tau_next | (tau_c + ({{(N-N1){1'b0}}, e[N1-1:0]} << shift_c));
+        lo_md_n  = lo_md_n | md[e];
+        hi_md_n  = hi_md_n | md[e+1];
+        if (e == 0) begin
+          lo_t_n = lo_t_n | lo_t_c;
+          lo_x_n = lo_x_n | lo_x_c;
+        end else begin
+          lo_t_n = lo_t_n | c_t_r[(e-1)*TW +: TW];
+          lo_x_n = lo_x_n | c_x_r[(e-1)*3*XW +: 3*XW];
+        end
+      end
     end
-    lo_md_n = md[e];
-    hi_md_n = md[e + 1];
   end
 
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= c_valid[0];
+    else         valid_o <= valid_r;
   end
   always @(posedge clk_i) begin
     k_o     <= k_c;
     state_o <= {tau_next, lo_t_n, lo_x_n, lo_md_n, hi_md_n};
-    ovf_o   <= |c_ovf;
+    ovf_o   <= |c_ovf_r;
     ctx_o   <= ctx_c;
     tag_o   <= tag_c;
   end
-  wire unused_step = ^{c_valid[J-2:0], best};
+  wire unused_step = ^c_valid;
 endmodule
 
 `default_nettype wire

@@ -11,9 +11,26 @@
 // pred1 holds (the model returns before A and B otherwise). half_chord_o is 0 when disc < 0, as
 // in the model. When pred1_o is 0, a_o, b_o, ab_o, alpha_o and beta_o are don't-care.
 // Vectors are flattened {z, y, x}, each component two's complement.
-// Fixed latency of Latency = SqrtStages + 13 cycles (40 at the defaults): 5 stages up to the
-// radicand, the rpu_sqrt pipeline, 6 stages to the dot products, 2 in rpu_chord. One operand per
-// cycle; `tag_i` rides along unchanged. No backpressure inside (rpu_top reserves room).
+// Pipeline (every product an rpu_mul, rpu_mul_latency.vh; one operand per cycle, no stall; the
+// context rides in the multipliers' and the square root's tags, up to the root in a plain delay
+// line where no logic reads it; `tag_i` comes out unchanged):
+//   1        q = c0 − h
+//   L1       v̂_k·q_k, q_{k+1}·v̂_{k+2}, q_{k+2}·v̂_{k+1}   rpu_mul (CW+1) × (FV+2): 3 at the defaults
+//   1        tc (a sum of three: carry-save + one adder), w = q × v̂ floored
+//   L2       wt_k²                                      rpu_mul (CW+6)²: 4
+//   1        |wt|² (carry-save + one adder)
+//   1        disc = R² − perp2, the radicand
+//   root     rpu_sqrt                                   27 at the defaults
+//   1        tc, hc and the disc sign into flip-flops (the root's tag leaves a shift register)
+//   1        t1, t2, pred1
+//   L3       v̂_k·t1, v̂_k·t2                             rpu_mul (FV+2) × (CW+5): 4
+//   1        A, B saturated
+//   1        AB = B − A, A − p1
+//   L4       (A − p1)_k·d_k, AB_k·d_k                     rpu_mul (CW+1)²: 3
+//   1        the dot products (carry-save + one adder)
+//   chord    two rpu_chord                              7
+// Latency = root + 9 + L1 + L2 + L3 + L4 + chord cycles (57 at the defaults; ref::sphere_latency).
+// No backpressure inside (rpu_top reserves room).
 `default_nettype none
 
 module rpu_sphere #(
@@ -69,13 +86,21 @@ module rpu_sphere #(
   localparam integer PtW   = DirW + TpW;     // v̂_k·t, exact
   localparam integer EndW  = PtW - FV;      // h + floor(v̂·t): |.| < 2^(CW+5) + 2^(CW−1)
   localparam integer DotW  = 2 * DiffW + 2;  // (A − p1)·d and AB·d
-  localparam integer SegW  = 3 * CW + 3 * DiffW + InvW + 7;  // {inv_s, inv_m, d, p1}
-  localparam integer ChW   = 3 * DiffW + InvW + 7;           // {inv_s, inv_m, d}
+  localparam integer SegW  = 3 * CW + 3 * DiffW + InvW + 7;  // {p1, d, inv_m, inv_s}
   // The square-root pipeline depth (rpu_sqrt's derived parameters).
   localparam integer SqShift  = (SqrtW == 0 || RadW <= SqrtW) ? 0 : (RadW - SqrtW + 1) / 2;
   localparam integer SqStages = (RadW - 2 * SqShift + 1) / 2;
-  localparam integer Latency  = SqStages + 13;
   localparam [RadW-1:0] RadMax = {RadW{1'b1}};
+`include "rpu_mul_latency.vh"
+  localparam integer L1 = rpu_mul_latency(DiffW, DirW, 1, 24, 17);
+  localparam integer L2 = rpu_mul_latency(WtW, WtW, 1, 24, 17);
+  localparam integer L3 = rpu_mul_latency(DirW, TpW, 1, 24, 17);
+  localparam integer L4 = rpu_mul_latency(DiffW, DiffW, 1, 24, 17);
+  localparam integer LCh = rpu_mul_latency(InvW + 1, DotW, 1, 24, 17) + 3;  // rpu_chord's
+  // The unit's latency (what the enclosing units count on).
+  /* verilator lint_off UNUSEDPARAM */
+  localparam integer Latency = SqStages + 9 + L1 + L2 + L3 + L4 + LCh;
+  /* verilator lint_on UNUSEDPARAM */
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_sphere: CoordW must be in 12..40");
@@ -88,7 +113,7 @@ module rpu_sphere #(
     if (DirW != DirFrac + 2 || DiffW != CoordW + 1 || R2W != 2 * CoordW + 1 ||
         TcW != CoordW + 4 || HcW != CoordW + 3 || TW != TFrac + 3)
       $fatal(1, "rpu_sphere: derived parameters must not be overridden");
-    if (Latency < 14) $fatal(1, "rpu_sphere: bad square-root depth");
+    if (SqStages < 1) $fatal(1, "rpu_sphere: bad square-root depth");
   end
 
   genvar k;
@@ -105,199 +130,196 @@ module rpu_sphere #(
     end
   endgenerate
 
+  // R² rides in the products' tags to stage 6; the rest of the context {tag, seg, v̂, h}, which
+  // no logic reads before the square root, in a plain delay line (shift-register LUTs) of
+  // L1 + L2 + 4 stages from the inputs to the root's tag.
+  localparam integer C1W = R2W;
+  localparam integer DcW = TagW + SegW + 3 * DirW + 3 * CW;
+  localparam integer Dc  = L1 + L2 + 4;
+  reg [Dc*DcW-1:0] dc_q;
+  always @(posedge clk_i) dc_q <= {dc_q[(Dc-1)*DcW-1:0], tag_i, p1_i, d_i, inv_m_i, inv_s_i, vhat_i, eye_i};
+  wire [DcW-1:0] dc_out = dc_q[Dc*DcW-1 -: DcW];
   reg [3*DiffW-1:0] q1_q;
-  reg [3*CW-1:0]    h1_q;
   reg [3*DirW-1:0]  v1_q;
-  reg [R2W-1:0]     r2_1_q;
-  reg [SegW-1:0]    seg1_q;
-  reg [TagW-1:0]    tag1_q;
+  reg [C1W-1:0]     c1_q;
   reg               valid1_q;
   always @(posedge clk_i) begin
-    q1_q   <= q;
-    h1_q   <= eye_i;
-    v1_q   <= vhat_i;
-    r2_1_q <= r2_i;
-    seg1_q <= {inv_s_i, inv_m_i, d_i, p1_i};
-    tag1_q <= tag_i;
+    q1_q <= q;
+    v1_q <= vhat_i;
+    c1_q <= r2_i;
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 2: the products v̂_k·q_k and the cross-product terms q_{k+1}·v̂_{k+2}, q_{k+2}·v̂_{k+1}
-  // (all exact).
+  // The products v̂_k·q_k and the cross-product terms q_{k+1}·v̂_{k+2}, q_{k+2}·v̂_{k+1} (exact).
   // ---------------------------------------------------------------------------------------------
   wire [3*PvW-1:0] pv;
   wire [3*PvW-1:0] pca;
   wire [3*PvW-1:0] pcb;
+  wire             m1_valid;
+  wire [C1W-1:0]   c2;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_pv
-      wire signed [DirW-1:0]  vk  = v1_q[k*DirW +: DirW];
-      wire signed [DiffW-1:0] qk  = q1_q[k*DiffW +: DiffW];
-      wire signed [DirW-1:0]  va  = v1_q[((k+2)%3)*DirW +: DirW];
-      wire signed [DiffW-1:0] qa  = q1_q[((k+1)%3)*DiffW +: DiffW];
-      wire signed [DirW-1:0]  vb  = v1_q[((k+1)%3)*DirW +: DirW];
-      wire signed [DiffW-1:0] qb  = q1_q[((k+2)%3)*DiffW +: DiffW];
-      wire signed [PvW-1:0]   vx  = {{DiffW{vk[DirW-1]}}, vk};
-      wire signed [PvW-1:0]   qx  = {{DirW{qk[DiffW-1]}}, qk};
-      wire signed [PvW-1:0]   vax = {{DiffW{va[DirW-1]}}, va};
-      wire signed [PvW-1:0]   qax = {{DirW{qa[DiffW-1]}}, qa};
-      wire signed [PvW-1:0]   vbx = {{DiffW{vb[DirW-1]}}, vb};
-      wire signed [PvW-1:0]   qbx = {{DirW{qb[DiffW-1]}}, qb};
-      assign pv[k*PvW +: PvW]  = vx * qx;
-      assign pca[k*PvW +: PvW] = qax * vax;
-      assign pcb[k*PvW +: PvW] = qbx * vbx;
+      wire [DirW-1:0]  vk = v1_q[k*DirW +: DirW];
+      wire [DiffW-1:0] qk = q1_q[k*DiffW +: DiffW];
+      wire [DirW-1:0]  va = v1_q[((k+2)%3)*DirW +: DirW];
+      wire [DiffW-1:0] qa = q1_q[((k+1)%3)*DiffW +: DiffW];
+      wire [DirW-1:0]  vb = v1_q[((k+1)%3)*DirW +: DirW];
+      wire [DiffW-1:0] qb = q1_q[((k+2)%3)*DiffW +: DiffW];
+      wire             v_pv, v_a, v_b, t_a, t_b;
+      wire [C1W-1:0]   t_pv;
+      rpu_mul #(.AW(DiffW), .BW(DirW), .Signed(1), .TagW(C1W)) u_pv (
+        .clk_i, .rst_ni, .valid_i(valid1_q), .a_i(qk), .b_i(vk), .tag_i(c1_q),
+        .valid_o(v_pv), .p_o(pv[k*PvW +: PvW]), .tag_o(t_pv));
+      rpu_mul #(.AW(DiffW), .BW(DirW), .Signed(1), .TagW(1)) u_pca (
+        .clk_i, .rst_ni, .valid_i(valid1_q), .a_i(qa), .b_i(va), .tag_i(1'b0),
+        .valid_o(v_a), .p_o(pca[k*PvW +: PvW]), .tag_o(t_a));
+      rpu_mul #(.AW(DiffW), .BW(DirW), .Signed(1), .TagW(1)) u_pcb (
+        .clk_i, .rst_ni, .valid_i(valid1_q), .a_i(qb), .b_i(vb), .tag_i(1'b0),
+        .valid_o(v_b), .p_o(pcb[k*PvW +: PvW]), .tag_o(t_b));
+      if (k == 0) begin : g_ctl
+        assign m1_valid = v_pv;
+        assign c2       = t_pv;
+        wire unused_ctl = ^{v_a, v_b, t_a, t_b};
+      end else begin : g_no_ctl
+        wire unused_ctl = ^{v_pv, t_pv, v_a, v_b, t_a, t_b};
+      end
     end
   endgenerate
 
-  reg [3*PvW-1:0]  pv2_q;
-  reg [3*PvW-1:0]  pca2_q;
-  reg [3*PvW-1:0]  pcb2_q;
-  reg [3*CW-1:0]   h2_q;
-  reg [3*DirW-1:0] v2_q;
-  reg [R2W-1:0]    r2_2_q;
-  reg [SegW-1:0]   seg2_q;
-  reg [TagW-1:0]   tag2_q;
-  reg              valid2_q;
-  always @(posedge clk_i) begin
-    pv2_q  <= pv;
-    pca2_q <= pca;
-    pcb2_q <= pcb;
-    h2_q   <= h1_q;
-    v2_q   <= v1_q;
-    r2_2_q <= r2_1_q;
-    seg2_q <= seg1_q;
-    tag2_q <= tag1_q;
-  end
-
   // ---------------------------------------------------------------------------------------------
-  // Stage 3: tc = floor(v̂·q · 2^-FV) (the sum cannot wrap in VqW bits); the cross product
-  // w = q × v̂ (exact), each component floored to Guard fraction bits of an LSB.
+  // Stage 3: tc = floor(v̂·q · 2^-FV) (the sum cannot wrap in VqW bits; one carry-save step and
+  // one adder); the cross product w = q × v̂ (exact), each component floored to Guard fraction
+  // bits of an LSB.
   // ---------------------------------------------------------------------------------------------
-  wire signed [PvW-1:0] pv_x = pv2_q[0*PvW +: PvW];
-  wire signed [PvW-1:0] pv_y = pv2_q[1*PvW +: PvW];
-  wire signed [PvW-1:0] pv_z = pv2_q[2*PvW +: PvW];
-  wire signed [VqW-1:0] vq = {{(VqW-PvW){pv_x[PvW-1]}}, pv_x} +
-                             {{(VqW-PvW){pv_y[PvW-1]}}, pv_y} +
-                             {{(VqW-PvW){pv_z[PvW-1]}}, pv_z};
-  wire [TcW-1:0] tc = vq[VqW-1:FV];  // arithmetic shift right by FV (floor)
+  wire [VqW-1:0] pv_x = {{(VqW-PvW){pv[1*PvW-1]}}, pv[0*PvW +: PvW]};
+  wire [VqW-1:0] pv_y = {{(VqW-PvW){pv[2*PvW-1]}}, pv[1*PvW +: PvW]};
+  wire [VqW-1:0] pv_z = {{(VqW-PvW){pv[3*PvW-1]}}, pv[2*PvW +: PvW]};
+  wire [VqW-1:0] vq_s = pv_x ^ pv_y ^ pv_z;
+  wire [VqW-2:0] vq_c = (pv_x[VqW-2:0] & pv_y[VqW-2:0]) | (pv_x[VqW-2:0] & pv_z[VqW-2:0]) |
+                        (pv_y[VqW-2:0] & pv_z[VqW-2:0]);
+  wire [VqW-1:0] vq   = vq_s + {vq_c, 1'b0};
+  wire [TcW-1:0] tc   = vq[VqW-1:FV];  // arithmetic shift right by FV (floor)
   wire unused_vq = ^vq[FV-1:0];
   wire [3*WtW-1:0] wt;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_w
-      wire signed [PvW-1:0] a = pca2_q[k*PvW +: PvW];
-      wire signed [PvW-1:0] b = pcb2_q[k*PvW +: PvW];
+      wire signed [PvW-1:0] a = pca[k*PvW +: PvW];
+      wire signed [PvW-1:0] b = pcb[k*PvW +: PvW];
       wire signed [PvW:0]   w = {a[PvW-1], a} - {b[PvW-1], b};
       assign wt[k*WtW +: WtW] = w[PvW:FV-Guard];  // floor(w · 2^-(FV−Guard))
       wire unused_w = ^w[FV-Guard-1:0];
     end
   endgenerate
 
-  reg [TcW-1:0]    tc3_q;
   reg [3*WtW-1:0]  wt3_q;
-  reg [3*CW-1:0]   h3_q;
-  reg [3*DirW-1:0] v3_q;
-  reg [R2W-1:0]    r2_3_q;
-  reg [SegW-1:0]   seg3_q;
-  reg [TagW-1:0]   tag3_q;
+  reg [TcW+C1W-1:0] c3_q;
   reg              valid3_q;
   always @(posedge clk_i) begin
-    tc3_q  <= tc;
-    wt3_q  <= wt;
-    h3_q   <= h2_q;
-    v3_q   <= v2_q;
-    r2_3_q <= r2_2_q;
-    seg3_q <= seg2_q;
-    tag3_q <= tag2_q;
+    wt3_q <= wt;
+    c3_q  <= {c2, tc};
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 4: the squares wt_k² (exact, non-negative).
+  // The squares wt_k² (exact, non-negative).
   // ---------------------------------------------------------------------------------------------
+  localparam integer C4W = TcW + C1W;
   wire [3*WsqW-1:0] wsq;
+  wire              m2_valid;
+  wire [C4W-1:0]    c4;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_wsq
-      wire signed [WtW-1:0]   wk = wt3_q[k*WtW +: WtW];
-      wire signed [2*WtW-1:0] wx = {{WtW{wk[WtW-1]}}, wk};
-      wire signed [2*WtW-1:0] sq = wx * wx;
+      wire [WtW-1:0]   wk = wt3_q[k*WtW +: WtW];
+      wire [2*WtW-1:0] sq;
+      wire             v_sq;
+      if (k == 0) begin : g_ctl
+        rpu_mul #(.AW(WtW), .BW(WtW), .Signed(1), .TagW(C4W)) u_sq (
+          .clk_i, .rst_ni, .valid_i(valid3_q), .a_i(wk), .b_i(wk), .tag_i(c3_q),
+          .valid_o(v_sq), .p_o(sq), .tag_o(c4));
+        assign m2_valid = v_sq;
+      end else begin : g_no_ctl
+        wire t_sq;
+        rpu_mul #(.AW(WtW), .BW(WtW), .Signed(1), .TagW(1)) u_sq (
+          .clk_i, .rst_ni, .valid_i(valid3_q), .a_i(wk), .b_i(wk), .tag_i(1'b0),
+          .valid_o(v_sq), .p_o(sq), .tag_o(t_sq));
+        wire unused_ctl = ^{v_sq, t_sq};
+      end
       // |wt_k| <= 2^(WtW−1), so wt_k² <= 2^(2WtW−2) < 2^WsqW: the top bit is zero.
       assign wsq[k*WsqW +: WsqW] = sq[WsqW-1:0];
       wire unused_sq = sq[2*WtW-1];
     end
   endgenerate
 
-  reg [3*WsqW-1:0] wsq4_q;
-  reg [R2W-1:0]    r2_4_q;
-  reg [TcW-1:0]    tc4_q;
-  reg [3*CW-1:0]   h4_q;
-  reg [3*DirW-1:0] v4_q;
-  reg [SegW-1:0]   seg4_q;
-  reg [TagW-1:0]   tag4_q;
-  reg              valid4_q;
+  // ---------------------------------------------------------------------------------------------
+  // Stage 5: perp2 = floor(|wt|² · 2^-2Guard) (the squared distance of c0 from the ray, LSB²;
+  // one carry-save step and one adder, exact: the sum fits PsW bits).
+  // ---------------------------------------------------------------------------------------------
+  wire [PsW-1:0] sq_x = {2'b00, wsq[0*WsqW +: WsqW]};
+  wire [PsW-1:0] sq_y = {2'b00, wsq[1*WsqW +: WsqW]};
+  wire [PsW-1:0] sq_z = {2'b00, wsq[2*WsqW +: WsqW]};
+  wire [PsW-1:0] ws_s = sq_x ^ sq_y ^ sq_z;
+  wire [PsW-2:0] ws_c = (sq_x[PsW-2:0] & sq_y[PsW-2:0]) | (sq_x[PsW-2:0] & sq_z[PsW-2:0]) |
+                        (sq_y[PsW-2:0] & sq_z[PsW-2:0]);
+  wire [PsW-1:0] wsum = ws_s + {ws_c, 1'b0};
+  wire unused_wsum = ^wsum[2*Guard-1:0];
+
+  reg [PsW-2*Guard-1:0] perp5_q;
+  reg [C4W-1:0]         c5_q;
+  reg                   valid5_q;
   always @(posedge clk_i) begin
-    wsq4_q  <= wsq;
-    r2_4_q  <= r2_3_q;
-    tc4_q   <= tc3_q;
-    h4_q    <= h3_q;
-    v4_q    <= v3_q;
-    seg4_q  <= seg3_q;
-    tag4_q  <= tag3_q;
+    perp5_q <= wsum[PsW-1:2*Guard];
+    c5_q    <= c4;
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 5: perp2 = floor(|wt|² · 2^-2Guard) (the squared distance of c0 from the ray, LSB²),
-  // disc = R² − perp2; the radicand: 0 when disc < 0 (no root taken: hc = 0 as in the model),
-  // saturated to RadW bits and flagged when wider (fixed::saturate_unsigned; disc <= R² never
-  // is, but the flag mirrors the model's rule rather than relying on that bound).
+  // Stage 6: disc = R² − perp2; the radicand: 0 when disc < 0 (no root taken: hc = 0 as in the
+  // model), saturated to RadW bits and flagged when wider (fixed::saturate_unsigned; disc <= R²
+  // never is, but the flag mirrors the model's rule rather than relying on that bound).
   // ---------------------------------------------------------------------------------------------
-  wire [PsW-1:0] wsum = {2'b00, wsq4_q[0*WsqW +: WsqW]} + {2'b00, wsq4_q[1*WsqW +: WsqW]} +
-                        {2'b00, wsq4_q[2*WsqW +: WsqW]};
-  wire [PsW-2*Guard-1:0] perp2 = wsum[PsW-1:2*Guard];
-  wire unused_wsum = ^wsum[2*Guard-1:0];
-  wire signed [DiscW-1:0] disc = {{(DiscW-R2W){1'b0}}, r2_4_q} -
-                                 {{(DiscW-(PsW-2*Guard)){1'b0}}, perp2};
+  // c5 = {R², tc}
+  wire [TcW-1:0]    tc5   = c5_q[0 +: TcW];
+  wire [R2W-1:0]    r2_5  = c5_q[TcW +: R2W];
+  wire signed [DiscW-1:0] disc = {{(DiscW-R2W){1'b0}}, r2_5} -
+                                 {{(DiscW-(PsW-2*Guard)){1'b0}}, perp5_q};
   wire disc_neg = disc[DiscW-1];
   wire disc_big = ~disc_neg & (|disc[DiscW-2:RadW]);  // disc >= 2^RadW
   wire [RadW-1:0] rad = disc_neg ? {RadW{1'b0}} : disc_big ? RadMax : disc[RadW-1:0];
 
-  reg [RadW-1:0]   rad5_q;
-  reg              neg5_q;
-  reg              sovf5_q;
-  reg [TcW-1:0]    tc5_q;
-  reg [3*CW-1:0]   h5_q;
-  reg [3*DirW-1:0] v5_q;
-  reg [SegW-1:0]   seg5_q;
-  reg [TagW-1:0]   tag5_q;
-  reg              valid5_q;
+  reg [RadW-1:0]   rad6_q;
+  reg              neg6_q;
+  reg              sovf6_q;
+  reg [TcW-1:0]    tc6_q;
+  reg              valid6_q;
   always @(posedge clk_i) begin
-    rad5_q  <= rad;
-    neg5_q  <= disc_neg;
-    sovf5_q <= disc_big;
-    tc5_q   <= tc4_q;
-    h5_q    <= h4_q;
-    v5_q    <= v4_q;
-    seg5_q  <= seg4_q;
-    tag5_q  <= tag4_q;
+    rad6_q  <= rad;
+    neg6_q  <= disc_neg;
+    sovf6_q <= disc_big;
+    tc6_q   <= tc5;
   end
+  // dc = {tag, seg, v̂, h}, aligned with stage 6's registers.
+  wire [3*CW-1:0]   h6_q   = dc_out[0 +: 3*CW];
+  wire [3*DirW-1:0] v6_q   = dc_out[3*CW +: 3*DirW];
+  wire [SegW-1:0]   seg6_q = dc_out[3*CW+3*DirW +: SegW];
+  wire [TagW-1:0]   tag6_q = dc_out[DcW-1 -: TagW];
 
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       valid1_q <= 1'b0;
-      valid2_q <= 1'b0;
       valid3_q <= 1'b0;
-      valid4_q <= 1'b0;
       valid5_q <= 1'b0;
+      valid6_q <= 1'b0;
     end else begin
       valid1_q <= valid_i;
-      valid2_q <= valid1_q;
-      valid3_q <= valid2_q;
-      valid4_q <= valid3_q;
-      valid5_q <= valid4_q;
+      valid3_q <= m1_valid;
+      valid5_q <= m2_valid;
+      valid6_q <= valid5_q;
     end
   end
 
   // ---------------------------------------------------------------------------------------------
   // The square root; the context rides in its tag.
   // ---------------------------------------------------------------------------------------------
-  localparam integer SqTagW = TagW + SegW + 3 * DirW + 3 * CW + TcW + 2;
+  localparam integer CtxW   = TagW + SegW + 3 * DirW + 3 * CW + 1;  // {tag, seg, v̂, h, sovf}
+  localparam integer SqTagW = CtxW + TcW + 1;
   wire              sq_valid;
   wire [HcW-1:0]    sq_root;
   wire [SqTagW-1:0] sq_tag;
@@ -308,102 +330,114 @@ module rpu_sphere #(
   ) u_sqrt (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
-    .valid_i(valid5_q),
-    .rad_i  (rad5_q),
-    .tag_i  ({tag5_q, seg5_q, v5_q, h5_q, tc5_q, neg5_q, sovf5_q}),
+    .valid_i(valid6_q),
+    .rad_i  (rad6_q),
+    .tag_i  ({tag6_q, seg6_q, v6_q, h6_q, sovf6_q, tc6_q, neg6_q}),
     .valid_o(sq_valid),
     .root_o (sq_root),
     .tag_o  (sq_tag)
   );
-  wire [TagW-1:0]   tag_s  = sq_tag[SqTagW-1 -: TagW];
-  wire [SegW-1:0]   seg_s  = sq_tag[SqTagW-TagW-1 -: SegW];
-  wire [3*DirW-1:0] v_s    = sq_tag[2+TcW+3*CW +: 3*DirW];
-  wire [3*CW-1:0]   h_s    = sq_tag[2+TcW +: 3*CW];
-  wire [TcW-1:0]    tc_s   = sq_tag[2 +: TcW];
-  wire              neg_s  = sq_tag[1];
-  wire              sovf_s = sq_tag[0];
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 6: t2 = tc + hc, t1 = max(0, tc − hc), pred1 = disc >= 0 ∧ t2 > 0.
+  // Stage 7: tc, hc and the disc sign into flip-flops (the root's tag leaves a shift register);
+  // the rest of the context follows two plain stages behind.
   // ---------------------------------------------------------------------------------------------
-  wire signed [TpW-1:0] tc_w = {{(TpW-TcW){tc_s[TcW-1]}}, tc_s};
-  wire signed [TpW-1:0] hc_w = {{(TpW-HcW){1'b0}}, sq_root};
-  wire signed [TpW-1:0] t2   = tc_w + hc_w;
-  wire signed [TpW-1:0] t1d  = tc_w - hc_w;
-  wire [TpW-1:0]        t1   = t1d[TpW-1] ? {TpW{1'b0}} : t1d;
-  wire                  pred1 = ~neg_s & ~t2[TpW-1] & (|t2);
-
-  reg [TpW-1:0]    t1_6_q;
-  reg [TpW-1:0]    t2_6_q;
-  reg              pred1_6_q;
-  reg              sovf6_q;
-  reg [HcW-1:0]    hc6_q;
-  reg [TcW-1:0]    tc6_q;
-  reg [3*CW-1:0]   h6_q;
-  reg [3*DirW-1:0] v6_q;
-  reg [SegW-1:0]   seg6_q;
-  reg [TagW-1:0]   tag6_q;
-  reg              valid6_q;
+  reg [HcW-1:0]  hc7_q;
+  reg [TcW-1:0]  tc7_q;
+  reg            neg7_q;
+  reg [CtxW-1:0] ctx7_q;
+  reg            valid7_q;
+  // Loaded only with a valid operand: a clock enable the square root's registers do not have, so
+  // Yosys cannot pack these into the shift registers before them.
   always @(posedge clk_i) begin
-    t1_6_q    <= t1;
-    t2_6_q    <= t2;
-    pred1_6_q <= pred1;
-    sovf6_q   <= sovf_s;
-    hc6_q     <= sq_root;
-    tc6_q     <= tc_s;
-    h6_q      <= h_s;
-    v6_q      <= v_s;
-    seg6_q    <= seg_s;
-    tag6_q    <= tag_s;
+    if (sq_valid) begin
+      hc7_q  <= sq_root;
+      tc7_q  <= sq_tag[1 +: TcW];
+      neg7_q <= sq_tag[0];
+    end
+    ctx7_q <= sq_tag[SqTagW-1 -: CtxW];
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 7: the products v̂_k·t1, v̂_k·t2 (exact).
+  // Stage 8: t2 = tc + hc, t1 = max(0, tc − hc), pred1 = disc >= 0 ∧ t2 > 0.
   // ---------------------------------------------------------------------------------------------
-  wire [3*PtW-1:0] pa;
-  wire [3*PtW-1:0] pb;
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : g_pt
-      wire signed [DirW-1:0] vk  = v6_q[k*DirW +: DirW];
-      wire signed [PtW-1:0]  vx  = {{TpW{vk[DirW-1]}}, vk};
-      wire signed [PtW-1:0]  t1x = {{DirW{t1_6_q[TpW-1]}}, t1_6_q};
-      wire signed [PtW-1:0]  t2x = {{DirW{t2_6_q[TpW-1]}}, t2_6_q};
-      assign pa[k*PtW +: PtW] = vx * t1x;
-      assign pb[k*PtW +: PtW] = vx * t2x;
-    end
-  endgenerate
+  wire signed [TpW-1:0] tc_w = {{(TpW-TcW){tc7_q[TcW-1]}}, tc7_q};
+  wire signed [TpW-1:0] hc_w = {{(TpW-HcW){1'b0}}, hc7_q};
+  wire signed [TpW-1:0] t2   = tc_w + hc_w;
+  wire signed [TpW-1:0] t1d  = tc_w - hc_w;
+  wire [TpW-1:0]        t1   = t1d[TpW-1] ? {TpW{1'b0}} : t1d;
+  wire                  pred1 = ~neg7_q & ~t2[TpW-1] & (|t2);
 
   // The outputs that ride along to the end: {tag, tc, hc, pred1}.
   localparam integer OutW = TagW + TcW + HcW + 1;
 
-  reg [3*PtW-1:0] pa7_q;
-  reg [3*PtW-1:0] pb7_q;
-  reg [3*CW-1:0]  h7_q;
-  reg             sovf7_q;
-  reg [OutW-1:0]  out7_q;
-  reg [SegW-1:0]  seg7_q;
-  reg             valid7_q;
+  reg [TpW-1:0]    t1_8_q;
+  reg [TpW-1:0]    t2_8_q;
+  reg [3*DirW-1:0] v8_q;
+  reg [3*CW-1:0]   h8_q;
+  reg              sovf8_q;
+  reg [OutW-1:0]   out8_q;
+  reg [SegW-1:0]   seg8_q;
+  reg              valid8_q;
+  // ctx7 = {tag, seg, v̂, h, sovf}
   always @(posedge clk_i) begin
-    pa7_q   <= pa;
-    pb7_q   <= pb;
-    h7_q    <= h6_q;
-    sovf7_q <= sovf6_q;
-    out7_q  <= {tag6_q, tc6_q, hc6_q, pred1_6_q};
-    seg7_q  <= seg6_q;
+    t1_8_q  <= t1;
+    t2_8_q  <= t2;
+    v8_q    <= ctx7_q[1+3*CW +: 3*DirW];
+    h8_q    <= ctx7_q[1 +: 3*CW];
+    sovf8_q <= ctx7_q[0];
+    out8_q  <= {ctx7_q[CtxW-1 -: TagW], tc7_q, hc7_q, pred1};
+    seg8_q  <= ctx7_q[1+3*CW+3*DirW +: SegW];
   end
-  wire pred1_7 = out7_q[0];
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 8: A = sat(h + floor(v̂·t1 · 2^-FV)), B likewise, to CW bits; flagged under pred1.
+  // The products v̂_k·t1, v̂_k·t2 (exact).
+  // ---------------------------------------------------------------------------------------------
+  localparam integer C9W = SegW + OutW + 1 + 3 * CW;  // {seg, out, sovf, h}
+  wire [3*PtW-1:0] pa;
+  wire [3*PtW-1:0] pb;
+  wire             m3_valid;
+  wire [C9W-1:0]   c9;
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : g_pt
+      wire [DirW-1:0] vk = v8_q[k*DirW +: DirW];
+      wire            v_a, v_b, t_b;
+      if (k == 0) begin : g_ctl
+        rpu_mul #(.AW(DirW), .BW(TpW), .Signed(1), .TagW(C9W)) u_pa (
+          .clk_i, .rst_ni, .valid_i(valid8_q), .a_i(vk), .b_i(t1_8_q),
+          .tag_i({seg8_q, out8_q, sovf8_q, h8_q}),
+          .valid_o(v_a), .p_o(pa[k*PtW +: PtW]), .tag_o(c9));
+        assign m3_valid = v_a;
+      end else begin : g_no_ctl
+        wire t_a;
+        rpu_mul #(.AW(DirW), .BW(TpW), .Signed(1), .TagW(1)) u_pa (
+          .clk_i, .rst_ni, .valid_i(valid8_q), .a_i(vk), .b_i(t1_8_q), .tag_i(1'b0),
+          .valid_o(v_a), .p_o(pa[k*PtW +: PtW]), .tag_o(t_a));
+        wire unused_ctl = ^{v_a, t_a};
+      end
+      rpu_mul #(.AW(DirW), .BW(TpW), .Signed(1), .TagW(1)) u_pb (
+        .clk_i, .rst_ni, .valid_i(valid8_q), .a_i(vk), .b_i(t2_8_q), .tag_i(1'b0),
+        .valid_o(v_b), .p_o(pb[k*PtW +: PtW]), .tag_o(t_b));
+      wire unused_b = ^{v_b, t_b};
+    end
+  endgenerate
+  wire [3*CW-1:0] h9    = c9[0 +: 3*CW];
+  wire            sovf9 = c9[3*CW];
+  wire [OutW-1:0] out9  = c9[3*CW+1 +: OutW];
+  wire [SegW-1:0] seg9  = c9[C9W-1 -: SegW];
+
+  // ---------------------------------------------------------------------------------------------
+  // Stage 10: A = sat(h + floor(v̂·t1 · 2^-FV)), B likewise, to CW bits (flagged under pred1 in
+  // stage 11).
   // ---------------------------------------------------------------------------------------------
   wire [3*CW-1:0] a_sat;
   wire [3*CW-1:0] b_sat;
   wire [5:0]      clamped;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_end
-      wire signed [PtW-1:0]  pak = pa7_q[k*PtW +: PtW];
-      wire signed [PtW-1:0]  pbk = pb7_q[k*PtW +: PtW];
-      wire signed [CW-1:0]   hk  = h7_q[k*CW +: CW];
+      wire signed [PtW-1:0]  pak = pa[k*PtW +: PtW];
+      wire signed [PtW-1:0]  pbk = pb[k*PtW +: PtW];
+      wire signed [CW-1:0]   hk  = h9[k*CW +: CW];
       // |floor(v̂·t · 2^-FV)| <= 2^(CW+5) (|v̂_k| <= 2^(FV+1), |t| <= 2^(CW+4)): with h the sum
       // fits EndW = CW + 7 bits, the width of the shifted product; the addition cannot wrap.
       wire signed [EndW-1:0] ea  = pak[PtW-1:FV] + {{(EndW-CW){hk[CW-1]}}, hk};
@@ -418,144 +452,138 @@ module rpu_sphere #(
     end
   endgenerate
 
-  reg [3*CW-1:0] a8_q;
-  reg [3*CW-1:0] b8_q;
-  reg            ovf8_q;
-  reg [OutW-1:0] out8_q;
-  reg [SegW-1:0] seg8_q;
-  reg            valid8_q;
+  reg [3*CW-1:0] a10_q;
+  reg [3*CW-1:0] b10_q;
+  reg [5:0]      clamped10_q;
+  reg            sovf10_q;
+  reg [OutW-1:0] out10_q;
+  reg [SegW-1:0] seg10_q;
+  reg            valid10_q;
   always @(posedge clk_i) begin
-    a8_q   <= a_sat;
-    b8_q   <= b_sat;
-    ovf8_q <= sovf7_q | (pred1_7 & (|clamped));
-    out8_q <= out7_q;
-    seg8_q <= seg7_q;
+    a10_q   <= a_sat;
+    b10_q   <= b_sat;
+    clamped10_q <= clamped;
+    sovf10_q    <= sovf9;
+    out10_q <= out9;
+    seg10_q <= seg9;
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 9: AB = B − A, A − p1 (exact, DiffW bits).
+  // Stage 11: AB = B − A, A − p1 (exact, DiffW bits); the overflow flag.
   // ---------------------------------------------------------------------------------------------
+  // seg = {p1, d, inv_m, inv_s}
+  wire [3*CW-1:0]    p1_10  = seg10_q[SegW-1 -: 3*CW];
+  wire [3*DiffW-1:0] d_10   = seg10_q[InvW+7 +: 3*DiffW];
+  wire [InvW+6:0]    inv_10 = seg10_q[0 +: InvW+7];
   wire [3*DiffW-1:0] ab;
   wire [3*DiffW-1:0] ap;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_ab
-      wire signed [DiffW-1:0] ak = {a8_q[k*CW+CW-1], a8_q[k*CW +: CW]};
-      wire signed [DiffW-1:0] bk = {b8_q[k*CW+CW-1], b8_q[k*CW +: CW]};
-      wire signed [DiffW-1:0] pk = {seg8_q[k*CW+CW-1], seg8_q[k*CW +: CW]};
+      wire signed [DiffW-1:0] ak = {a10_q[k*CW+CW-1], a10_q[k*CW +: CW]};
+      wire signed [DiffW-1:0] bk = {b10_q[k*CW+CW-1], b10_q[k*CW +: CW]};
+      wire signed [DiffW-1:0] pk = {p1_10[k*CW+CW-1], p1_10[k*CW +: CW]};
       assign ab[k*DiffW +: DiffW] = bk - ak;
       assign ap[k*DiffW +: DiffW] = ak - pk;
     end
   endgenerate
 
-  reg [3*CW-1:0]    a9_q;
-  reg [3*CW-1:0]    b9_q;
-  reg [3*DiffW-1:0] ab9_q;
-  reg [3*DiffW-1:0] ap9_q;
-  reg               ovf9_q;
-  reg [OutW-1:0]    out9_q;
-  reg [ChW-1:0]     ch9_q;
-  reg               valid9_q;
+  // Everything the outputs need besides alpha and beta, then {inv_m, inv_s}.
+  localparam integer ResW = OutW + 1 + 6 * CW + 3 * DiffW;  // {out, ovf, A, B, AB}
+  reg [3*DiffW-1:0] ab11_q;
+  reg [3*DiffW-1:0] ap11_q;
+  reg [3*DiffW-1:0] d11_q;
+  reg [ResW+InvW+6:0] res11_q;
+  reg               valid11_q;
   always @(posedge clk_i) begin
-    a9_q   <= a8_q;
-    b9_q   <= b8_q;
-    ab9_q  <= ab;
-    ap9_q  <= ap;
-    ovf9_q <= ovf8_q;
-    out9_q <= out8_q;
-    ch9_q  <= seg8_q[SegW-1:3*CW];  // {inv_s, inv_m, d}; p1 is no longer needed
+    ab11_q  <= ab;
+    ap11_q  <= ap;
+    d11_q   <= d_10;
+    res11_q <= {out10_q, sovf10_q | (out10_q[0] & (|clamped10_q)), a10_q, b10_q, ab, inv_10};
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stage 10: the products (A − p1)_k·d_k and AB_k·d_k (exact).
+  // The products (A − p1)_k·d_k and AB_k·d_k (exact).
   // ---------------------------------------------------------------------------------------------
-  wire [3*2*DiffW-1:0] prod_a;
-  wire [3*2*DiffW-1:0] prod_b;
+  localparam integer PdW = 2 * DiffW;
+  wire [3*PdW-1:0]     prod_a;
+  wire [3*PdW-1:0]     prod_b;
+  wire                 m4_valid;
+  wire [ResW+InvW+6:0] res12;
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_dp
-      wire signed [DiffW-1:0]   dk  = ch9_q[k*DiffW +: DiffW];
-      wire signed [DiffW-1:0]   apk = ap9_q[k*DiffW +: DiffW];
-      wire signed [DiffW-1:0]   abk = ab9_q[k*DiffW +: DiffW];
-      wire signed [2*DiffW-1:0] dx  = {{DiffW{dk[DiffW-1]}}, dk};
-      wire signed [2*DiffW-1:0] apx = {{DiffW{apk[DiffW-1]}}, apk};
-      wire signed [2*DiffW-1:0] abx = {{DiffW{abk[DiffW-1]}}, abk};
-      assign prod_a[k*2*DiffW +: 2*DiffW] = apx * dx;
-      assign prod_b[k*2*DiffW +: 2*DiffW] = abx * dx;
+      wire [DiffW-1:0] dk  = d11_q[k*DiffW +: DiffW];
+      wire             v_a, v_b, t_b;
+      if (k == 0) begin : g_ctl
+        rpu_mul #(.AW(DiffW), .BW(DiffW), .Signed(1), .TagW(ResW + InvW + 7)) u_pa (
+          .clk_i, .rst_ni, .valid_i(valid11_q), .a_i(ap11_q[k*DiffW +: DiffW]), .b_i(dk),
+          .tag_i(res11_q), .valid_o(v_a), .p_o(prod_a[k*PdW +: PdW]), .tag_o(res12));
+        assign m4_valid = v_a;
+      end else begin : g_no_ctl
+        wire t_a;
+        rpu_mul #(.AW(DiffW), .BW(DiffW), .Signed(1), .TagW(1)) u_pa (
+          .clk_i, .rst_ni, .valid_i(valid11_q), .a_i(ap11_q[k*DiffW +: DiffW]), .b_i(dk),
+          .tag_i(1'b0), .valid_o(v_a), .p_o(prod_a[k*PdW +: PdW]), .tag_o(t_a));
+        wire unused_ctl = ^{v_a, t_a};
+      end
+      rpu_mul #(.AW(DiffW), .BW(DiffW), .Signed(1), .TagW(1)) u_pb (
+        .clk_i, .rst_ni, .valid_i(valid11_q), .a_i(ab11_q[k*DiffW +: DiffW]), .b_i(dk),
+        .tag_i(1'b0), .valid_o(v_b), .p_o(prod_b[k*PdW +: PdW]), .tag_o(t_b));
+      wire unused_b = ^{v_b, t_b};
     end
   endgenerate
 
-  reg [3*2*DiffW-1:0] prod_a10_q;
-  reg [3*2*DiffW-1:0] prod_b10_q;
-  reg [3*CW-1:0]      a10_q;
-  reg [3*CW-1:0]      b10_q;
-  reg [3*DiffW-1:0]   ab10_q;
-  reg                 ovf10_q;
-  reg [OutW-1:0]      out10_q;
-  reg [InvW+6:0]      inv10_q;
-  reg                 valid10_q;
-  always @(posedge clk_i) begin
-    prod_a10_q <= prod_a;
-    prod_b10_q <= prod_b;
-    a10_q      <= a9_q;
-    b10_q      <= b9_q;
-    ab10_q     <= ab9_q;
-    ovf10_q    <= ovf9_q;
-    out10_q    <= out9_q;
-    inv10_q    <= ch9_q[ChW-1:3*DiffW];  // {inv_s, inv_m}
-  end
-
   // ---------------------------------------------------------------------------------------------
-  // Stage 11: the dot products (sums of three exact products, DotW bits).
+  // Stage 13: the dot products (sums of three exact products, DotW bits: one carry-save step
+  // and one adder, exact).
   // ---------------------------------------------------------------------------------------------
-  localparam integer PdW = 2 * DiffW;
-  wire signed [PdW-1:0] pa_x = prod_a10_q[0*PdW +: PdW];
-  wire signed [PdW-1:0] pa_y = prod_a10_q[1*PdW +: PdW];
-  wire signed [PdW-1:0] pa_z = prod_a10_q[2*PdW +: PdW];
-  wire signed [PdW-1:0] pb_x = prod_b10_q[0*PdW +: PdW];
-  wire signed [PdW-1:0] pb_y = prod_b10_q[1*PdW +: PdW];
-  wire signed [PdW-1:0] pb_z = prod_b10_q[2*PdW +: PdW];
-  wire signed [DotW-1:0] dot_a = {{2{pa_x[PdW-1]}}, pa_x} + {{2{pa_y[PdW-1]}}, pa_y} +
-                                 {{2{pa_z[PdW-1]}}, pa_z};
-  wire signed [DotW-1:0] dot_b = {{2{pb_x[PdW-1]}}, pb_x} + {{2{pb_y[PdW-1]}}, pb_y} +
-                                 {{2{pb_z[PdW-1]}}, pb_z};
+  wire [DotW-1:0] pa_x = {{2{prod_a[1*PdW-1]}}, prod_a[0*PdW +: PdW]};
+  wire [DotW-1:0] pa_y = {{2{prod_a[2*PdW-1]}}, prod_a[1*PdW +: PdW]};
+  wire [DotW-1:0] pa_z = {{2{prod_a[3*PdW-1]}}, prod_a[2*PdW +: PdW]};
+  wire [DotW-1:0] pb_x = {{2{prod_b[1*PdW-1]}}, prod_b[0*PdW +: PdW]};
+  wire [DotW-1:0] pb_y = {{2{prod_b[2*PdW-1]}}, prod_b[1*PdW +: PdW]};
+  wire [DotW-1:0] pb_z = {{2{prod_b[3*PdW-1]}}, prod_b[2*PdW +: PdW]};
+  wire [DotW-1:0] da_s = pa_x ^ pa_y ^ pa_z;
+  wire [DotW-2:0] da_c = (pa_x[DotW-2:0] & pa_y[DotW-2:0]) | (pa_x[DotW-2:0] & pa_z[DotW-2:0]) |
+                         (pa_y[DotW-2:0] & pa_z[DotW-2:0]);
+  wire [DotW-1:0] db_s = pb_x ^ pb_y ^ pb_z;
+  wire [DotW-2:0] db_c = (pb_x[DotW-2:0] & pb_y[DotW-2:0]) | (pb_x[DotW-2:0] & pb_z[DotW-2:0]) |
+                         (pb_y[DotW-2:0] & pb_z[DotW-2:0]);
+  wire [DotW-1:0] dot_a = da_s + {da_c, 1'b0};
+  wire [DotW-1:0] dot_b = db_s + {db_c, 1'b0};
 
-  // Everything the outputs need besides alpha and beta rides in chord A's tag.
-  localparam integer ResW = OutW + 1 + 6 * CW + 3 * DiffW;  // {out, ovf, A, B, AB}
-
-  reg [DotW-1:0] dot_a11_q;
-  reg [DotW-1:0] dot_b11_q;
-  reg [ResW-1:0] res11_q;
-  reg [InvW+6:0] inv11_q;
-  reg            valid11_q;
+  reg [DotW-1:0] dot_a13_q;
+  reg [DotW-1:0] dot_b13_q;
+  reg [ResW-1:0] res13_q;
+  reg [InvW+6:0] inv13_q;
+  reg            valid13_q;
   always @(posedge clk_i) begin
-    dot_a11_q <= dot_a;
-    dot_b11_q <= dot_b;
-    res11_q   <= {out10_q, ovf10_q, a10_q, b10_q, ab10_q};
-    inv11_q   <= inv10_q;
+    dot_a13_q <= dot_a;
+    dot_b13_q <= dot_b;
+    res13_q   <= res12[ResW+InvW+6 -: ResW];
+    inv13_q   <= res12[InvW+6:0];
   end
 
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      valid6_q  <= 1'b0;
       valid7_q  <= 1'b0;
       valid8_q  <= 1'b0;
-      valid9_q  <= 1'b0;
       valid10_q <= 1'b0;
       valid11_q <= 1'b0;
+      valid13_q <= 1'b0;
     end else begin
-      valid6_q  <= sq_valid;
-      valid7_q  <= valid6_q;
+      valid7_q  <= sq_valid;
       valid8_q  <= valid7_q;
-      valid9_q  <= valid8_q;
-      valid10_q <= valid9_q;
+      valid10_q <= m3_valid;
       valid11_q <= valid10_q;
+      valid13_q <= m4_valid;
     end
   end
 
   // ---------------------------------------------------------------------------------------------
-  // Stages 12–13: alpha = chord((A − p1)·d), beta = chord(AB·d).
+  // alpha = chord((A − p1)·d), beta = chord(AB·d).
   // ---------------------------------------------------------------------------------------------
-  wire [InvW-1:0] inv_m = inv11_q[InvW-1:0];
-  wire [6:0]      inv_s = inv11_q[InvW+6:InvW];
+  wire [InvW-1:0] inv_m = inv13_q[InvW+6:7];
+  wire [6:0]      inv_s = inv13_q[6:0];
 
   wire            alpha_valid;
   wire [TW-1:0]   alpha;
@@ -570,11 +598,11 @@ module rpu_sphere #(
   ) u_alpha (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
-    .valid_i(valid11_q),
-    .dot_i  (dot_a11_q),
+    .valid_i(valid13_q),
+    .dot_i  (dot_a13_q),
     .inv_m_i(inv_m),
     .inv_s_i(inv_s),
-    .tag_i  (res11_q),
+    .tag_i  (res13_q),
     .valid_o(alpha_valid),
     .t_o    (alpha),
     .ovf_o  (alpha_ovf),
@@ -594,8 +622,8 @@ module rpu_sphere #(
   ) u_beta (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
-    .valid_i(valid11_q),
-    .dot_i  (dot_b11_q),
+    .valid_i(valid13_q),
+    .dot_i  (dot_b13_q),
     .inv_m_i(inv_m),
     .inv_s_i(inv_s),
     .tag_i  (1'b0),

@@ -324,39 +324,25 @@ module rpu_top #(
                         t_p0ok ? tx_t : {TW{1'b0}}, t_p0ok ? tx_x : {3*XW{1'b0}},
                         t_p0ok & tx_covers, t_depth};
 
-  reg  [ResW-1:0]   cfifo_q [0:Depth-1];
-  reg  [ResW-1:0]   tfifo_q [0:Depth-1];
-  reg               ofifo_q [0:Depth-1];   // per accepted item: 1 = texture
-  reg  [FifoLog2:0] cwr_q, crd_q, twr_q, trd_q, owr_q, ord_q;
-  wire              head_tex   = ofifo_q[ord_q[FifoLog2-1:0]];
-  wire              order_nemp = owr_q != ord_q;
-  wire              head_valid = order_nemp && (head_tex ? twr_q != trd_q : cwr_q != crd_q);
+  // Three FIFOs in block RAM (rpu_fifo: registered read, data out of a register): curve
+  // results, texture results, and one bit per accepted item saying which of the two holds its
+  // result. The credit count bounds every FIFO's fill by Depth, so no write is ever refused.
+  wire              c_valid, t_valid, o_valid, head_tex;
+  wire [ResW-1:0]   c_data, t_data;
+  wire              c_wr_ready_unused, t_wr_ready_unused, o_wr_ready_unused;
+  wire              head_valid = o_valid && (head_tex ? t_valid : c_valid);
   wire              rs_ready;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      cwr_q <= {(FifoLog2+1){1'b0}};
-      crd_q <= {(FifoLog2+1){1'b0}};
-      twr_q <= {(FifoLog2+1){1'b0}};
-      trd_q <= {(FifoLog2+1){1'b0}};
-      owr_q <= {(FifoLog2+1){1'b0}};
-      ord_q <= {(FifoLog2+1){1'b0}};
-    end else begin
-      if (cp_valid) cwr_q <= cwr_q + 1'b1;
-      if (tx_valid) twr_q <= twr_q + 1'b1;
-      if (v0_q)     owr_q <= owr_q + 1'b1;
-      if (pop) begin
-        ord_q <= ord_q + 1'b1;
-        if (head_tex) trd_q <= trd_q + 1'b1;
-        else          crd_q <= crd_q + 1'b1;
-      end
-    end
-  end
-  always @(posedge clk_i) begin
-    if (cp_valid) cfifo_q[cwr_q[FifoLog2-1:0]] <= cres;
-    if (tx_valid) tfifo_q[twr_q[FifoLog2-1:0]] <= tres;
-    if (v0_q)     ofifo_q[owr_q[FifoLog2-1:0]] <= seg_q[SegW-1];
-  end
-  wire [ResW-1:0] head = head_tex ? tfifo_q[trd_q[FifoLog2-1:0]] : cfifo_q[crd_q[FifoLog2-1:0]];
+  rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_curve_fifo (
+    .clk_i, .rst_ni, .wr_valid_i(cp_valid), .wr_ready_o(c_wr_ready_unused), .wr_data_i(cres),
+    .rd_valid_o(c_valid), .rd_ready_i(pop && !head_tex), .rd_data_o(c_data));
+  rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_texture_fifo (
+    .clk_i, .rst_ni, .wr_valid_i(tx_valid), .wr_ready_o(t_wr_ready_unused), .wr_data_i(tres),
+    .rd_valid_o(t_valid), .rd_ready_i(pop && head_tex), .rd_data_o(t_data));
+  rpu_fifo #(.Width(1), .Log2Depth(FifoLog2)) u_order_fifo (
+    .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(o_wr_ready_unused),
+    .wr_data_i(seg_q[SegW-1]), .rd_valid_o(o_valid), .rd_ready_i(pop), .rd_data_o(head_tex));
+  wire unused_fifo = ^{c_wr_ready_unused, t_wr_ready_unused, o_wr_ready_unused};
+  wire [ResW-1:0] head = head_tex ? t_data : c_data;
   // A result leaves when the consumer and the pixel resolve both take it.
   assign res_valid_o = head_valid && rs_ready;
   assign {res_last_o, res_id_o, res_i_o, res_j_o, res_seg_o, res_tex_o, res_prim_o, res_pred1_o,

@@ -65,24 +65,28 @@ header=(Module Configuration LUT INV FF SRL LUTRAM DSP48E1 BRAM36 CARRY4 MUXF7/8
 declare -A DEPS=(
   [rpu_sqrt]=""
   [rpu_div]=""
-  [rpu_chord]=""
-  [rpu_capture]=""
+  [rpu_chord]="rpu_mul"
+  [rpu_capture]="rpu_mul"
   [rpu_resolve]=""
-  [rpu_curve_point]=""
-  [rpu_guide]="rpu_sqrt"
-  [rpu_ray_gen]="rpu_sqrt rpu_div"
-  [rpu_sphere]="rpu_sqrt rpu_chord"
-  [rpu_candidate]="rpu_guide rpu_curve_point rpu_sqrt"
+  [rpu_fifo]=""
+  [rpu_mul]=""
+  [rpu_curve_point]="rpu_mul"
+  [rpu_guide_pair]="rpu_sqrt rpu_mul"
+  [rpu_ray_gen]="rpu_sqrt rpu_div rpu_mul"
+  [rpu_sphere]="rpu_sqrt rpu_chord rpu_mul"
+  [rpu_candidate]="rpu_guide_pair rpu_curve_point rpu_sqrt rpu_mul"
   [rpu_ip_step]="rpu_candidate"
-  [rpu_ip]="rpu_ip_step rpu_candidate"
-  [rpu_ray_plane]="rpu_div"
-  [rpu_texture]="rpu_chord rpu_guide rpu_curve_point"
-  [rpu_top]="rpu_ray_gen rpu_sphere rpu_ip rpu_capture"
+  [rpu_ip]="rpu_ip_step rpu_candidate rpu_fifo"
+  [rpu_ray_plane]="rpu_div rpu_mul"
+  [rpu_texture]="rpu_chord rpu_guide_pair rpu_curve_point rpu_mul"
+  [rpu_top]="rpu_ray_gen rpu_sphere rpu_ip rpu_capture rpu_fifo"
 )
 # Parameters set for the report (empty: the module's defaults).
 declare -A PARAMS=(
   [rpu_sqrt]="RadW=58"                       # the guide's radicand (= the default)
   [rpu_div]="NumW=51 DenW=28 QuotW=27"       # rpu_ray_gen's reciprocal 2^(2FV+2)/|v|, FV = 24
+  [rpu_fifo]="Width=256 Log2Depth=10"        # about rpu_top's result FIFOs
+  [rpu_mul]="AW=51 BW=23 Signed=0"           # the guide pair's L²·w, its widest product
 )
 # Reduced configurations (-r or module:reduced): the iterative IP, one rpu_ip_step unit reused
 # K = N/N1 = 8 times instead of 8 unrolled step units (about 1/8 of the one-item-per-cycle rate).
@@ -91,7 +95,7 @@ declare -A REDUCED=(
   [rpu_top]="Unrolled=0"
 )
 # Default module list and run order: roughly by size, the biggest last.
-ALL=(rpu_resolve rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guide rpu_ray_plane
+ALL=(rpu_resolve rpu_fifo rpu_mul rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guide_pair rpu_ray_plane
      rpu_ray_gen rpu_texture rpu_sphere rpu_candidate rpu_ip_step rpu_ip rpu_top)
 
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
@@ -313,7 +317,7 @@ run_one() {
     # Totals over the hierarchy; no cell lists, no ltp and no sta (paths stop at module
     # boundaries).
     cat >"$work/$tag.ys" <<EOF
-read_verilog $flist
+read_verilog -I$rtl $flist
 hierarchy -check -top $mod$chparam
 synth_xilinx -noiopad -noclkbuf -top $mod
 tee -q -o $work/$tag.stat stat -tech xilinx -top $mod
@@ -321,7 +325,7 @@ EOF
     : >"$work/$tag.hier"
   else
   cat >"$work/$tag.ys" <<EOF
-read_verilog $flist
+read_verilog -I$rtl $flist
 hierarchy -check -top $mod$chparam
 synth_xilinx -flatten -noiopad -noclkbuf -top $mod
 tee -q -o $work/$tag.stat stat -tech xilinx

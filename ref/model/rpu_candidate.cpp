@@ -2,7 +2,7 @@
 #include "model/rpu_candidate.h"
 
 #include "model/rpu_curve_point.h"
-#include "model/rpu_guide.h"
+#include "model/rpu_guide_pair.h"
 #include "model/rpu_sqrt.h"
 
 namespace rpu::ref {
@@ -15,10 +15,8 @@ Candidate candidate_evaluator(const HwParams& p, const SegmentDesc& s, const Sea
   const i128 mm = static_cast<i128>(m);
   c.pr = si.A + scale_truncate(si.AB, mm, p.n);                            // pr(τ), LSB
   c.t = fixed::saturate(si.alpha + truncate(si.beta * mm, p.n), p.t_w(), ovf);  // t(τ), Q(3.FT)
-  const i128 w = guide_weight(p, c.t);
-  const i128 g1 = guide_unit(p, s.guide[0], s.L2, w, ovf);
-  const i128 g2 = guide_unit(p, s.guide[1], s.L2, w, ovf);
-  c.X = curve_point_unit(p, s, c.t, g1, g2);
+  const GuidePair g = guide_pair(p, s.guide[0], s.guide[1], s.L2, c.t, ovf);
+  c.X = curve_point_unit(p, s, c.t, g.g1, g.g2);
   const WVec3 diff = c.pr - c.X;
   const i128 md2 = dot(diff, diff);
   c.md = p.metric == Metric::kAbs ? sqrt_unit(md2, p.dist_radicand_w(), p.sqrt_w, ovf)

@@ -1,6 +1,8 @@
 // Twin of rtl/rpu_chord.v | sim/tb/tb_rpu_chord.cpp | sim/tests/rpu_sphere.cmake
 #include "model/rpu_chord.h"
 
+#include "model/rpu_mul.h"
+
 namespace rpu::ref {
 
 using fixed::truncate;
@@ -8,6 +10,10 @@ using fixed::truncate;
 i128 chord_parameter(const HwParams& p, const SegmentDesc& s, i128 dot_value, Overflow& ovf) {
   const i128 t = truncate(dot_value * s.inv_m, s.inv_s - p.t_frac);
   return fixed::saturate(t, p.t_w(), ovf);
+}
+
+int chord_latency(const HwParams& p) {
+  return mul_latency(p.inv_w + 1, 2 * p.diff_w() + 2, true) + 3;
 }
 
 }  // namespace rpu::ref

@@ -1,6 +1,10 @@
 // Twin of rtl/rpu_curve_point.v | sim/tb/tb_rpu_curve_point.cpp | sim/tests/rpu_curve_point.cmake
 #include "model/rpu_curve_point.h"
 
+#include <algorithm>
+
+#include "model/rpu_mul.h"
+
 namespace rpu::ref {
 
 using fixed::truncate;
@@ -13,6 +17,12 @@ WVec3 curve_point_unit(const HwParams& p, const SegmentDesc& s, i128 t, i128 g1,
   const i128 G2 = truncate(g2 * t, p.t_frac);
   return pt + scale_truncate(widen(s.guide[0].u), G1, p.unit_frac) +
          scale_truncate(widen(s.guide[1].u), G2, p.unit_frac);
+}
+
+int curve_point_latency(const HwParams& p) {
+  const int gw = p.coord_w + 2, tw = p.t_w(), gkw = p.coord_w + 5;
+  return std::max(mul_latency(gw, tw + 1, true), mul_latency(gw, tw, true)) +
+         mul_latency(p.unit_w(), gkw, true) + 1;
 }
 
 }  // namespace rpu::ref

@@ -1,6 +1,9 @@
 // Twin of rtl/rpu_ray_gen.v | sim/tb/tb_rpu_ray_gen.cpp | sim/tests/rpu_ray_gen.cmake
 #include "model/rpu_ray_gen.h"
 
+#include <algorithm>
+
+#include "model/rpu_mul.h"
 #include "model/rpu_sqrt.h"
 
 namespace rpu::ref {
@@ -32,6 +35,13 @@ RayGenOut ray_generator(const HwParams& p, const CameraDesc& cam, int i, int j) 
   r.e_top = et0 - scale_truncate(sw, j, 0);
   r.e_bottom = et0 - scale_truncate(sw, j + 1, 0);
   return r;
+}
+
+int ray_gen_latency(const HwParams& p, int idx_w) {
+  const int fv = p.dir_frac, vg_w = HwParams::kDirInt + fv + HwParams::kRayGuard;
+  const int v_w = HwParams::kDirInt + fv, quot_w = fv + 3;
+  const int l1 = std::max(mul_latency(vg_w, idx_w + 1, true), mul_latency(p.edge_w(), idx_w + 1, true));
+  return 2 * fv + 10 + l1 + mul_latency(v_w, v_w, true) + mul_latency(quot_w + 1, v_w, true);
 }
 
 }  // namespace rpu::ref

@@ -13,5 +13,8 @@ struct RayGenOut {
   WVec3 e_top, e_bottom;  // E_top(j), E_top(j+1), Q(4.FE+14)
 };
 RayGenOut ray_generator(const HwParams& p, const CameraDesc& cam, int i, int j);
+// rpu_ray_gen's latency in cycles at these widths and pixel-index width idx_w (its IdxW; its
+// header: the square root, the divider, three rpu_mul groups and three single stages).
+int ray_gen_latency(const HwParams& p, int idx_w = 14);
 
 }  // namespace rpu::ref

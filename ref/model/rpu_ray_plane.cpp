@@ -1,6 +1,8 @@
 // Twin of rtl/rpu_ray_plane.v | sim/tb/tb_rpu_ray_plane.cpp | sim/tests/rpu_texture.cmake
 #include "model/rpu_ray_plane.h"
 
+#include "model/rpu_mul.h"
+
 namespace rpu::ref {
 
 using fixed::u128;
@@ -23,6 +25,11 @@ PlanePoint ray_plane_unit(const HwParams& p, const CameraDesc& cam, const IVec3&
   pp.p0 = p0;
   pp.depth = dot(p0 - h, widen(cam.w));
   return pp;
+}
+
+int ray_plane_latency(const HwParams& p) {
+  return p.coord_w + 5 + mul_latency(p.coord_w + 2, p.dir_w(), true) +
+         mul_latency(p.diff_w(), p.edge_w(), true);
 }
 
 }  // namespace rpu::ref

@@ -12,5 +12,8 @@ struct PlanePoint {
   i128 depth = 0;      // (p0 - h)·W, same format as CaptureOut::depth
 };
 PlanePoint ray_plane_unit(const HwParams& p, const CameraDesc& cam, const IVec3& vhat);
+// rpu_ray_plane's latency in cycles at these widths (its header: two stages, the divider, the
+// products v̂·t0, one stage, the depth products, one stage).
+int ray_plane_latency(const HwParams& p);
 
 }  // namespace rpu::ref

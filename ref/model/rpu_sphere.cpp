@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "model/rpu_chord.h"
+#include "model/rpu_mul.h"
 #include "model/rpu_sqrt.h"
 
 namespace rpu::ref {
@@ -38,6 +39,15 @@ SearchInterval sphere_unit(const HwParams& p, const IVec3& eye, const IVec3& vha
   si.alpha = chord_parameter(p, s, dot(si.A - widen(s.p1), d), ovf);
   si.beta = chord_parameter(p, s, dot(si.AB, d), ovf);
   return si;
+}
+
+int sphere_latency(const HwParams& p) {
+  const int rad_w = p.sphere_radicand_w();
+  const int shift = (p.sqrt_w == 0 || rad_w <= p.sqrt_w) ? 0 : (rad_w - p.sqrt_w + 1) / 2;
+  const int wt_w = p.coord_w + 6;  // q × v̂ floored to kSphereGuard fraction bits
+  return (rad_w - 2 * shift + 1) / 2 + 9 + mul_latency(p.diff_w(), p.dir_w(), true) +
+         mul_latency(wt_w, wt_w, true) + mul_latency(p.dir_w(), p.coord_w + 5, true) +
+         mul_latency(p.diff_w(), p.diff_w(), true) + chord_latency(p);
 }
 
 }  // namespace rpu::ref

@@ -17,5 +17,8 @@ struct SearchInterval {
 };
 SearchInterval sphere_unit(const HwParams& p, const IVec3& eye, const IVec3& vhat,
                            const SegmentDesc& s, Overflow& ovf);
+// rpu_sphere's latency in cycles at these widths (its header: the square root, nine single stages,
+// four rpu_mul groups, rpu_chord).
+int sphere_latency(const HwParams& p);
 
 }  // namespace rpu::ref

@@ -5,7 +5,8 @@
 
 #include "model/rpu_chord.h"
 #include "model/rpu_curve_point.h"
-#include "model/rpu_guide.h"
+#include "model/rpu_guide_pair.h"
+#include "model/rpu_mul.h"
 
 namespace rpu::ref {
 
@@ -22,13 +23,20 @@ TextureOut texture_unit(const HwParams& p, const SegmentDesc& s, const WVec3& p0
   // t̂ = (p0 - p1)·d / L²; where pr1 fails the value is never used, so f1 is clamped to
   // [0, L²] first (a mux in hardware) and t̂ stays in [0, 1] without saturating.
   o.t = chord_parameter(p, s, std::clamp<i128>(f1, 0, s.L2), ovf);
-  const i128 w = guide_weight(p, o.t);
-  o.X = curve_point_unit(p, s, o.t, guide_unit(p, s.guide[0], s.L2, w, ovf),
-                         guide_unit(p, s.guide[1], s.L2, w, ovf));
+  const GuidePair g = guide_pair(p, s.guide[0], s.guide[1], s.L2, o.t, ovf);
+  o.X = curve_point_unit(p, s, o.t, g.g1, g.g2);
   const WVec3 e = o.X - p0;
   o.pr3 = dot(e, e) <= s.w0_2;
   o.covers = o.pr1 && (o.pr2 || o.pr3);
   return o;
+}
+
+int texture_latency(const HwParams& p) {
+  const int cw = p.coord_w, r1w = cw + 1, r2w = cw + 2, dw = cw + 1, ew = cw + 4;
+  const int lf = std::max(std::max(mul_latency(r1w, dw, true), mul_latency(dw, r2w, true)),
+                          std::max(mul_latency(r1w, r1w, true), mul_latency(r2w, r2w, true)));
+  return 6 + lf + mul_latency(ew, ew, true) + chord_latency(p) + guide_pair_latency(p) +
+         curve_point_latency(p);
 }
 
 }  // namespace rpu::ref

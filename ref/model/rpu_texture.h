@@ -13,5 +13,8 @@ struct TextureOut {
   WVec3 X;
 };
 TextureOut texture_unit(const HwParams& p, const SegmentDesc& s, const WVec3& p0, Overflow& ovf);
+// rpu_texture's latency in cycles at these widths (its header: six single stages, the front
+// products, the squares e_k², rpu_chord, rpu_guide_pair, rpu_curve_point).
+int texture_latency(const HwParams& p);
 
 }  // namespace rpu::ref

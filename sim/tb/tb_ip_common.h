@@ -58,6 +58,11 @@ void drive_pair(Top& top, const ref::HwParams& p, const ref::SegmentDesc& s,
   put(top.a2_i, g2.a, CW);
   put(top.b2_i, g2.b, p.t_frac);
   put_vec3(top.u2_i, g2.u.x, g2.u.y, g2.u.z, UW);
+  // rpu_candidate and rpu_ip_step take h² from their caller (rpu_ip squares h once per pair).
+  if constexpr (requires { top.hh1_i; }) {
+    put(top.hh1_i, i128{g1.h} * g1.h, 2 * CW + 10);
+    put(top.hh2_i, i128{g2.h} * g2.h, 2 * CW + 10);
+  }
 }
 
 // Width of one md value and of the state vector.

@@ -20,6 +20,7 @@ struct Item {
   ref::WVec3 X;
   i128 t;
   ref::CaptureOut want;
+  unsigned tag = 0;
 };
 
 }  // namespace
@@ -97,6 +98,7 @@ int main(int argc, char** argv) {
       put3(top->w_i, wv, EW);
       top->tag_i = static_cast<unsigned>(pending.size() & 1);
       pending.push_back(it);
+      pending.back().tag = top->tag_i;
       items.pop_front();
     }
     sim::tick(*top, *ctx);
@@ -108,14 +110,15 @@ int main(int argc, char** argv) {
       const unsigned signs = w.signs[0] | (w.signs[1] << 1) | (w.signs[2] << 2) | (w.signs[3] << 3);
       const i128 depth = sim::get_signed(top->depth_o, CW + 4 + EW + 2);
       if (top->hit_o != w.hit || top->t_in_range_o != w.t_in_range || top->signs_o != signs ||
-          depth != w.depth) {
+          depth != w.depth || top->tag_o != it.tag) {
         std::printf("FAILURE cycle %ld item %ld: pixel (%d,%d) X = (%s, %s, %s) t = %s\n"
-                    "  expected hit %d t_ok %d signs %x depth %s\n  actual   hit %d t_ok %d signs %x depth %s\n",
+                    "  expected hit %d t_ok %d signs %x depth %s tag %u\n"
+                    "  actual   hit %d t_ok %d signs %x depth %s tag %u\n",
                     cycle, matched, it.i, it.j, sim::to_string(it.X.x).c_str(),
                     sim::to_string(it.X.y).c_str(), sim::to_string(it.X.z).c_str(),
                     sim::to_string(it.t).c_str(), w.hit, w.t_in_range, signs,
-                    sim::to_string(w.depth).c_str(), top->hit_o, top->t_in_range_o, top->signs_o,
-                    sim::to_string(depth).c_str());
+                    sim::to_string(w.depth).c_str(), it.tag, top->hit_o, top->t_in_range_o,
+                    top->signs_o, sim::to_string(depth).c_str(), static_cast<unsigned>(top->tag_o));
         return 1;
       }
       hits += w.hit;

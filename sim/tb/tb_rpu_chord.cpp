@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
   p.inv_w = INV_W;
   p.validate();
   const int DotW = 2 * p.diff_w() + 2, IW = p.inv_w, TW = p.t_w(), FT = p.t_frac;
-  constexpr int kShW = 7, kLatency = 2;
+  constexpr int kShW = 7;
+  const int kLatency = ref::chord_latency(p);
 
   std::vector<Item> items;
   const auto add = [&](i128 dot, i128 inv_m, int inv_s) {

@@ -46,7 +46,7 @@ using rpu::sim::u128;
 
 constexpr int kCW = COORD_W, kFT = T_FRAC, kFU = UNIT_FRAC, kTagW = TAG_W;
 constexpr int kTW = kFT + 3, kDW = kCW + 1, kUW = kFU + 2, kGW = kCW + 2, kXW = kCW + 3;
-constexpr int kLatency = 3;
+
 
 struct Op {
   ref::SegmentDesc seg;  // p1, d, guide[0].u, guide[1].u are used
@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
   p.t_frac = kFT;
   p.unit_frac = kFU;
   p.validate();
+  const int kLatency = ref::curve_point_latency(p);  // its header: products of t, of u, the sum
 
   // ---- the scenes' segments ----
   std::vector<ref::SegmentDesc> segs;

@@ -45,7 +45,6 @@ constexpr int kEgW = ref::HwParams::kEdgeInt + kFe + kGuard;  // el0, et0, sw
 constexpr int kVW = ref::HwParams::kDirInt + kFv;             // v
 constexpr int kVhW = 2 + kFv;                                 // v̂
 constexpr int kEoW = kEgW + kIdxW + 1;                        // edge vectors out
-constexpr int kLatency = 2 * kFv + 11;
 
 // A port of three `w`-bit components {z, y, x} as 32-bit words (x in the lowest bits).
 struct Bits {
@@ -174,6 +173,7 @@ int main(int argc, char** argv) {
   ref::HwParams params;
   params.dir_frac = kFv;
   params.edge_frac = kFe;
+  const int kLatency = ref::ray_gen_latency(params, kIdxW);
   std::vector<Scene> scenes;
   for (const char* name : {"curve12", "airfield"}) {
     const std::string path = std::string(RPU_SCENE_DIR) + "/" + name + ".json";

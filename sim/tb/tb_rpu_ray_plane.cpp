@@ -51,7 +51,6 @@ constexpr int kCw = COORD_W, kFv = DIR_FRAC, kFe = EDGE_FRAC, kTagW = TAG_W;
 constexpr int kDirW = kFv + 2;
 constexpr int kEdgeW = ref::HwParams::kEdgeInt + kFe + ref::HwParams::kRayGuard;
 constexpr int kDepthW = kCw + 4 + kEdgeW + 2;
-constexpr int kLatency = kCw + 5;
 
 ref::HwParams make_params() {
   ref::HwParams p;
@@ -99,6 +98,7 @@ int main(int argc, char** argv) {
   const std::uint64_t seed = sim::test_seed("tb_rpu_ray_plane");
   std::mt19937_64 rng(seed);
   const ref::HwParams p = make_params();
+  const int kLatency = ref::ray_plane_latency(p);
 
   const auto load = [&](const char* name) {
     return scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json");

@@ -194,8 +194,7 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(seed);
   const ref::HwParams& p = kP;
   const int rad_w = p.sphere_radicand_w();
-  const int sq_shift = (p.sqrt_w == 0 || rad_w <= p.sqrt_w) ? 0 : (rad_w - p.sqrt_w + 1) / 2;
-  const long latency = (rad_w - 2 * sq_shift + 1) / 2 + 13;
+  const long latency = ref::sphere_latency(p);
 
   std::vector<Item> items;
 

@@ -64,10 +64,6 @@ using sim::u128;
 constexpr int kCw = COORD_W, kFt = T_FRAC, kTagW = TAG_W;
 constexpr int kTw = kFt + 3, kDw = kCw + 1, kUw = UNIT_FRAC + 2, kHw = kCw + 5;
 constexpr int kL2w = 2 * kCw + 3, kXw = kCw + 3, kW02w = 2 * kCw + 1, kInvW = INV_W;
-// rpu_texture's latency: the guides' square-root depth + 15.
-constexpr int kRadW = 2 * kCw + 10;
-constexpr int kSqShift = (SQRT_W == 0 || kRadW <= SQRT_W) ? 0 : (kRadW - SQRT_W + 1) / 2;
-constexpr int kLatency = (kRadW - 2 * kSqShift + 1) / 2 + 15;
 
 ref::HwParams make_params() {
   ref::HwParams p;
@@ -172,6 +168,7 @@ int main(int argc, char** argv) {
   const std::uint64_t seed = sim::test_seed("tb_rpu_texture");
   std::mt19937_64 rng(seed);
   const ref::HwParams p = make_params();
+  const int kLatency = ref::texture_latency(p);
 
   std::vector<Scene> scenes;
   for (const char* name : {"ellipse6", "polyline9", "airfield"}) {

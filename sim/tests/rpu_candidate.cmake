@@ -1,6 +1,6 @@
 # rpu_candidate: real curve12 intervals, random and edge τ, both metrics.
-set(RPU_CANDIDATE_RTL ${RPU_RTL_DIR}/rpu_candidate.v ${RPU_RTL_DIR}/rpu_guide.v
-    ${RPU_RTL_DIR}/rpu_curve_point.v ${RPU_RTL_DIR}/rpu_sqrt.v)
+set(RPU_CANDIDATE_RTL ${RPU_RTL_DIR}/rpu_candidate.v ${RPU_RTL_DIR}/rpu_guide_pair.v
+    ${RPU_RTL_DIR}/rpu_curve_point.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_mul.v)
 rpu_verilated_test(tb_rpu_candidate TOP rpu_candidate TB tb/tb_rpu_candidate.cpp
                    SOURCES ${RPU_CANDIDATE_RTL} DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 rpu_verilated_test(tb_rpu_candidate_sq TOP rpu_candidate TB tb/tb_rpu_candidate.cpp

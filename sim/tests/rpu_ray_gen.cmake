@@ -3,7 +3,7 @@
 # curve12, the corners, 40,000 random airfield pixels and alternating cameras; FV = FE = 12: a
 # few thousand random pixels of both scenes, shrunk to 32 pixels a side (a pixel must span 64
 # direction LSBs for the compiler to accept the view).
-set(RPU_RAY_GEN_SOURCES ${RPU_RTL_DIR}/rpu_ray_gen.v ${RPU_RTL_DIR}/rpu_sqrt.v
+set(RPU_RAY_GEN_SOURCES ${RPU_RTL_DIR}/rpu_ray_gen.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_mul.v
                         ${RPU_RTL_DIR}/rpu_div.v)
 rpu_verilated_test(tb_rpu_ray_gen TOP rpu_ray_gen TB tb/tb_rpu_ray_gen.cpp
                    SOURCES ${RPU_RAY_GEN_SOURCES} PARAMS -GTagW=12

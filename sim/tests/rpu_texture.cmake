@@ -1,11 +1,12 @@
 # The texture path. rpu_ray_plane (with rpu_div): every ellipse6 pixel, random airfield pixels,
 # constructed cameras (eye below / on the plane, v̂_z = 0, grazing rays leaving the range) and
-# random port values. rpu_texture (with rpu_chord, rpu_guide, rpu_sqrt, rpu_curve_point):
+# random port values. rpu_texture (with rpu_chord, rpu_guide_pair, rpu_sqrt, rpu_curve_point):
 # (p0, segment) pairs of ellipse6, polyline9 and airfield, p0 from the model's ray/plane point of
 # real pixels, segments from the classification grid around p0 and at random, plus descriptor
 # edges and exact comparison boundaries. Opt-in extras: a narrow ray/plane set, the texture unit
 # with pre-shifted guide roots (SqrtW 40; CoordW 16 with SqrtW 32 and a 3-bit tag).
-set(RPU_RAY_PLANE_RTL ${RPU_RTL_DIR}/rpu_ray_plane.v ${RPU_RTL_DIR}/rpu_div.v)
+set(RPU_RAY_PLANE_RTL ${RPU_RTL_DIR}/rpu_ray_plane.v ${RPU_RTL_DIR}/rpu_div.v
+    ${RPU_RTL_DIR}/rpu_mul.v)
 rpu_verilated_test(tb_rpu_ray_plane TOP rpu_ray_plane TB tb/tb_rpu_ray_plane.cpp
                    SOURCES ${RPU_RAY_PLANE_RTL} PARAMS -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8)
@@ -14,7 +15,8 @@ rpu_verilated_test(tb_rpu_ray_plane_cw16_fv12 EXTRA TOP rpu_ray_plane TB tb/tb_r
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" COORD_W=16 DIR_FRAC=12
                         EDGE_FRAC=12)
 set(RPU_TEXTURE_RTL ${RPU_RTL_DIR}/rpu_texture.v ${RPU_RTL_DIR}/rpu_chord.v
-    ${RPU_RTL_DIR}/rpu_guide.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_curve_point.v)
+    ${RPU_RTL_DIR}/rpu_guide_pair.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_curve_point.v
+    ${RPU_RTL_DIR}/rpu_mul.v)
 rpu_verilated_test(tb_rpu_texture TOP rpu_texture TB tb/tb_rpu_texture.cpp
                    SOURCES ${RPU_TEXTURE_RTL} PARAMS -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8)

@@ -1,8 +1,9 @@
-// Twin of rtl/rpu_guide.v | sim/tb/tb_rpu_guide.cpp | sim/tests/rpu_guide.cmake
-#include "model/rpu_guide.h"
+// Twin of rtl/rpu_guide_pair.v | sim/tb/tb_rpu_guide_pair.cpp | sim/tests/rpu_guide_pair.cmake
+#include "model/rpu_guide_pair.h"
 
 #include <algorithm>
 
+#include "model/rpu_mul.h"
 #include "model/rpu_sqrt.h"
 
 namespace rpu::ref {
@@ -32,6 +33,25 @@ i128 guide_unit(const HwParams& p, const GuideDesc& g, i128 L2, i128 w, Overflow
     }
   }
   return 0;
+}
+
+int guide_pair_latency(const HwParams& p) {
+  const int ft = p.t_frac, ww = ft - 1, aw = p.coord_w, aww = aw + ww - ft;
+  const int l2w = 2 * p.coord_w + 3, radw = p.guide_radicand_w();
+  const int shift = (p.sqrt_w == 0 || radw <= p.sqrt_w) ? 0 : (radw - p.sqrt_w + 1) / 2;
+  const int lat_w = mul_latency(ft, ft, false);
+  const int lat_awbw = std::max(mul_latency(aw, ww, false), mul_latency(ft, ww, false));
+  const int lat_prod = std::max(lat_awbw + mul_latency(aww, ww, false), mul_latency(l2w, ww, false)) + 1;
+  return lat_w + lat_prod + (radw - 2 * shift + 1) / 2 + 1;
+}
+
+GuidePair guide_pair(const HwParams& p, const GuideDesc& g1, const GuideDesc& g2, i128 L2, i128 t,
+                     Overflow& ovf) {
+  GuidePair r;
+  r.w = guide_weight(p, t);
+  r.g1 = guide_unit(p, g1, L2, r.w, ovf);
+  r.g2 = guide_unit(p, g2, L2, r.w, ovf);
+  return r;
 }
 
 }  // namespace rpu::ref
