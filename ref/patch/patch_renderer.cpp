@@ -91,8 +91,10 @@ struct PixelWorker {
   // Eq 3: N random (u, v), the subset M′ within ε0 of the best g, each refined (best first).
   void random_starts(int patch, const RayFrame& ray, int i, int j, PatchPixel& best) {
     const PatchSurface& s = (*surfaces)[static_cast<size_t>(patch)];
-    std::mt19937 rng(static_cast<unsigned>(j * 73856093) ^ static_cast<unsigned>(i * 19349663) ^
-                     static_cast<unsigned>(patch * 83492791));
+    // The seed hashes (i, j, patch) in unsigned arithmetic (wraps by definition; an int product
+    // overflows for large patch ids).
+    std::mt19937 rng((static_cast<unsigned>(j) * 73856093u) ^ (static_cast<unsigned>(i) * 19349663u) ^
+                     (static_cast<unsigned>(patch) * 83492791u));
     std::uniform_real_distribution<double> d(0.0, 1.0);
     struct Sample { double g, u, v; };
     std::vector<Sample> m(static_cast<size_t>(o->random_samples));
