@@ -22,26 +22,26 @@ PAIRS_1080P = {
 }
 
 # Slowest register-to-register path of the modules in each form, Yosys `sta` with the -specify
-# cell library (docs/resources.md): unrolled = rpu_ip_step (14.67 ns) is the slowest unit of the
-# unrolled top; iterative = rpu_ip Unrolled=0 (16.54 ns). Rule of thumb from issue 10: 3.0 ns of
-# cell delay is about 200 MHz after routing, i.e. routing adds about 2/3.
+# cell library (docs/resources.md): rpu_ip_step (3.98 ns) after the products became rpu_mul
+# pipelines; every other module is at 3.57-3.91 ns. The iterative rpu_ip reuses the same step
+# unit (k at run time) and was not re-measured whole. Rule of thumb from issue 10: 3.0 ns of cell
+# delay is about 200 MHz after routing, i.e. routing adds about 2/3.
 ROUTING_FACTOR = 5.0 / 3.0
 
 # One unit of each form at the defaults (n = 16, n1 = 2, coord_w 24): LUT sites = logic LUT +
 # INV + SRL + LUTRAM; items per cycle measured by the co-simulation (docs/cosim.md, docs/rtl.md).
 FORMS = {
     "unrolled": {
-        # Hierarchical synthesis of rpu_top (docs/resources.md) minus the non-restoring square
-        # root's saving estimated from per-module counts (82 roots; within 3 % on five modules),
-        # plus the sphere unit's cross product (+26 DSP). An estimate, not a whole-top synthesis.
-        "lut_sites": 228_600, "ff": 196_700, "dsp": 2_572, "bram36": 70,
-        "items_per_cycle": 1.0, "sta_ns": 14.67, "source": "estimate",
+        # Estimate from the flattened per-module rows of docs/resources.md (8 rpu_ip_step, 2 start
+        # candidates, the rest once); the hierarchical synthesis of the whole top did not finish.
+        "lut_sites": 157_000, "ff": 216_000, "dsp": 1_940, "bram36": 82,
+        "items_per_cycle": 1.0, "sta_ns": 3.98, "source": "estimate",
     },
     "iterative": {
-        # Hierarchical synthesis of rpu_top Unrolled=0 at the defaults (docs/resources.md).
-        # 47,889 LUT + 2,865 INV + 29,011 SRL + 40,832 LUTRAM.
-        "lut_sites": 120_597, "ff": 54_335, "dsp": 773, "bram36": 70,
-        "items_per_cycle": 0.124, "sta_ns": 16.54, "source": "synthesis",
+        # Hierarchical synthesis of rpu_top Unrolled=0 at the defaults (docs/resources.md):
+        # 34,084 LUT + 3,597 INV + 46,124 SRL + 64 LUTRAM.
+        "lut_sites": 83_869, "ff": 191_736, "dsp": 616, "bram36": 127,
+        "items_per_cycle": 0.124, "sta_ns": 3.98, "source": "synthesis",
     },
 }
 
