@@ -38,9 +38,8 @@ using sim::u128;
 constexpr int kAW = A_W, kBW = B_W, kChA = CHUNK_A, kChB = CHUNK_B;
 constexpr bool kSigned = SIGNED != 0;
 constexpr int kTiles = ((kAW - SIGNED + kChA - 1) / kChA) * ((kBW - SIGNED + kChB - 1) / kChB);
-constexpr int kLevels = kTiles <= 1 ? 0 : kTiles <= 2 ? 1 : kTiles <= 4 ? 2 : kTiles <= 8 ? 3
-                        : kTiles <= 16 ? 4 : kTiles <= 32 ? 5 : 6;
-constexpr int kLatency = LATENCY != 0 ? LATENCY : 2 + kLevels;
+// The natural latency is the twin's formula (one formula for the RTL, the model and the tests).
+constexpr int kLatency = LATENCY != 0 ? LATENCY : ref::mul_latency(kAW, kBW, kSigned, kChA, kChB);
 
 i128 lo(int w) { return kSigned ? fixed::min_signed(w) : 0; }
 i128 hi(int w) { return kSigned ? fixed::max_signed(w) : static_cast<i128>(fixed::max_unsigned(w)); }
