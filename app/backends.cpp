@@ -20,6 +20,8 @@ nlohmann::json hw_params_json(const ref::HwParams& p) {
           {"edge_frac", p.edge_frac},
           {"inv_w", p.inv_w},
           {"sqrt_w", p.sqrt_w},
+          {"surf_w", p.surf_w},
+          {"angle_w", p.angle_w},
           {"metric", p.metric == ref::Metric::kAbs ? "abs" : "squared"},
           {"ip", p.unrolled ? "unrolled" : "iterative"}};
 }
@@ -35,7 +37,9 @@ std::string rtl_configurations() {
 }
 
 bool backend_applies(const std::string& backend, const scene::CompiledScene& sc) {
-  return sc.patches.empty() || backend == "float" || backend == "float-ip";
+  if (backend == "float" || backend == "float-ip") return true;
+  if (!sc.patches.empty()) return false;
+  return sc.surfaces.empty() || backend == "ref";
 }
 
 nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch::PatchRenderStats& s) {
@@ -65,6 +69,10 @@ nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch:
 BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
                           const BackendOptions& o) {
   BackendResult r;
+  if (!backend_applies(backend, sc) && !sc.surfaces.empty())
+    throw Error(sc.source + ": surfaces",
+                "the " + backend + " backend has no RTL path yet for vector-described surfaces "
+                "(ALGORITHM 3); render them with --backend float, float-ip or ref");
   if (!backend_applies(backend, sc))
     throw Error(sc.source + ": patches",
                 "the " + backend + " backend has no fixed-point path for parametric patches "
@@ -76,7 +84,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     fo.method = backend == "float" ? tracer::Method::kIdeal : tracer::Method::kIterative;
     tracer::RenderStats stats;
     r.render.frame = tracer::render_float(sc, fo, &stats);
-    r.pairs = stats.pairs_tested + stats.texture_pairs_tested;
+    r.pairs = stats.pairs_tested + stats.texture_pairs_tested + stats.surface_pieces;
     if (!sc.patches.empty()) {
       // The patch methods are themselves the thesis's iterative processes: float and float-ip
       // trace patches alike (--patch-method). Nearest hit wins against curves and textures.
@@ -102,7 +110,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     r.precision_warning = model.precision.warning;
     ref::RefStats stats;
     r.render.frame = ref::render_ref(sc, model, o.ref, &stats);
-    r.pairs = stats.curve_pairs + stats.texture_pairs;
+    r.pairs = stats.curve_pairs + stats.texture_pairs + stats.surface_pieces;
     r.overflows = stats.overflow_pairs;
   } else if (backend == "rtl") {
 #if RPU_HAVE_RTL

@@ -55,7 +55,8 @@ bool rtl_built();
 // The Verilated configurations this program contains, one per line.
 std::string rtl_configurations();
 
-// True when the backend can render the scene: ref and rtl have no path for patches.
+// True when the backend can render the scene: ref and rtl have no path for patches, rtl none
+// for surfaces (yet).
 bool backend_applies(const std::string& backend, const scene::CompiledScene& sc);
 
 // The patch rendering's statistics as JSON (method, map/refine seconds, starts, silhouette

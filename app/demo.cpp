@@ -70,6 +70,20 @@ int run_demo(const DemoOptions& options) {
   std::vector<nlohmann::json> metrics(scenes.size());
   std::vector<int> codes(scenes.size(), 0);
   std::vector<std::string> errors(scenes.size());
+  // Backends a scene's primitives have no path through (compare's "not_applicable": ref and rtl
+  // for patches, and for surfaces until the model traces them) and what the scene holds.
+  const auto not_applicable = [&](size_t k) {
+    const auto it = metrics[k].find("not_applicable");
+    std::string list;
+    if (it != metrics[k].end() && it->is_array())
+      for (const auto& b : *it) list += (list.empty() ? "" : ", ") + b.get<std::string>();
+    return list;
+  };
+  const auto float_only_kinds = [](const scene::Scene& s) {
+    return !s.patches.empty() && !s.surfaces.empty() ? std::string("patches and surfaces")
+           : !s.patches.empty()                      ? std::string("patches")
+                                                     : std::string("surfaces");
+  };
   std::atomic<size_t> next{0};
   std::mutex print_mu;
   const auto worker = [&] {
@@ -91,9 +105,12 @@ int run_demo(const DemoOptions& options) {
                                loaded[k].camera.height,
                                !errors[k].empty() ? "error: " + errors[k]
                                : codes[k] != 0    ? "FAIL, see " + co.out_dir + "/report.html"
-                               : !loaded[k].patches.empty()
-                                   ? std::string("patches: float backends and every patch method "
-                                                 "(ref, rtl not applicable)")
+                               : !not_applicable(k).empty()
+                                   ? fmt::format("{}: float backends{} ({} not applicable)",
+                                                 float_only_kinds(loaded[k]),
+                                                 loaded[k].patches.empty() ? ""
+                                                     : " and every patch method",
+                                                 not_applicable(k))
                                : co.skip_rtl      ? std::string("software backends only (--no-rtl)")
                                                   : std::string("PASS, rtl == ref"));
     }
@@ -114,11 +131,12 @@ int run_demo(const DemoOptions& options) {
     m["scene"] = b.name;
     m["report"] = std::string(b.name) + "/report.html";
     summary.push_back(m);
-    // Patch scenes have no ref or rtl render: their cells read "n/a", not "null".
-    const bool patches = !sc.patches.empty();
+    // Scenes with backends not applicable (patches, surfaces) have no ref or rtl render: their
+    // cells read "n/a", not "null".
+    const bool float_only = !not_applicable(k).empty();
     const auto cell = [&](const char* key) -> std::string {
       if (m.contains(key) && !m[key].is_null()) return m[key].dump();
-      return patches ? "n/a" : "null";
+      return float_only ? "n/a" : "null";
     };
     const nlohmann::json rtl = m.value("rtl", nlohmann::json());
     const auto num = [&](const char* key, const char* f) {
@@ -143,7 +161,8 @@ int run_demo(const DemoOptions& options) {
                              cell("ref_vs_float_ip_mismatched_pixels"),
                              cell("ref_vs_float_mismatched_pixels"),
                              cell("float_ip_vs_float_mismatched_pixels"), cell("cycles"),
-                             rc != 0 ? "FAIL" : patches ? "n/a (patches)"
+                             rc != 0      ? "FAIL"
+                             : float_only ? "n/a (" + float_only_kinds(sc) + ")"
                              : options.compare.skip_rtl ? "not run" : "PASS");
   }
   const fs::path out(options.out_dir);

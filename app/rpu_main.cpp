@@ -25,6 +25,7 @@
 #include "patch/patch_shading.h"
 #include "scene/compiled_scene.h"
 #include "tracer/float_tracer.h"
+#include "tracer/surface_shading.h"
 #include "volume_cmd.h"
 
 namespace {
@@ -69,6 +70,10 @@ struct CommonFlags {
         ->capture_default_str();
     app.add_option("--inv-w", hw.inv_w, "mantissa bits of 1/L^2")->capture_default_str();
     app.add_option("--sqrt-w", hw.sqrt_w, "widest square-root radicand (0 = exact)")
+        ->capture_default_str();
+    app.add_option("--surf-w", hw.surf_w, "surfaces: signed width of local coordinates")
+        ->capture_default_str();
+    app.add_option("--angle-w", hw.angle_w, "surfaces: bits of a binary angle (one turn)")
         ->capture_default_str();
     app.add_option("--metric", metric, "distance metric: abs (|d|, the seed's) or squared")
         ->capture_default_str();
@@ -252,6 +257,7 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
       shown.pixels[k].hit = shown.pixels[k].hit && frame.primitive[k] >= sc.first_patch_primitive;
     patch::shade_patch_pixels(rgb, shown, patch::prepare_surfaces(sc.patches), sc.camera);
   }
+  if (shade) tracer::shade_surface_pixels(rgb, frame, sc);  // vector-described surfaces
   image::write_rgb(output, frame.width, frame.height, rgb);
   if (!quiet)
     std::cerr << fmt::format("{}: {}x{} {} in {:.3f} s, {} hit pixels, {} ray/segment pairs\n",
@@ -326,8 +332,8 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("-q,--quiet", quiet, "no timing line on stderr");
   bool shade = false;
   render_cmd->add_flag("--shade", shade,
-                       "patches: Lambert shading with the surface normal (a picture; default: "
-                       "exact flat colours)");
+                       "patches and surfaces: Lambert shading with the surface normal (a "
+                       "picture; default: exact flat colours)");
   flags.add_to(*render_cmd);
 
   auto* config_cmd = app.add_subcommand("config", "print the effective parameter set");

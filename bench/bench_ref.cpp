@@ -1,7 +1,8 @@
 // Bit-accurate model throughput: ray/curve-segment work items per second on one core (one
 // fixed item, and a shuffled list of ~1000 items so caches and branch prediction do not flatter
-// the number), at the default parameters and with n1 = 1, n1 = 4 and the squared metric; and
-// whole frames of `--backend ref` on all cores.
+// the number), at the default parameters and with n1 = 1, n1 = 4 and the squared metric; surface
+// piece work items per second on one core, per primitive type; and whole frames of
+// `--backend ref` on all cores.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "model/descriptors.h"
 #include "model/hw_params.h"
 #include "model/ref_renderer.h"
+#include "model/rpu_surface_top.h"
 #include "model/units.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"
@@ -161,6 +163,54 @@ BENCHMARK_CAPTURE(BM_RefPair, cycle_n1_4, 4, ref::Metric::kAbs, true);
 BENCHMARK_CAPTURE(BM_RefPair, one_n1_2_squared, 2, ref::Metric::kSquared, false);
 BENCHMARK_CAPTURE(BM_RefPair, cycle_n1_2_squared, 2, ref::Metric::kSquared, true);
 
+// One core, surface piece work items through process_surface_piece (sphere unit, local
+// transform, cuts, K IP steps of indicator evaluations, depth): ~1000 valid pieces of the demo
+// scene, shuffled with a fixed seed (a strided scan of the image, every piece of each pixel).
+struct SurfaceItem {
+  ref::IVec3 vhat;
+  std::size_t surface = 0;
+  int piece = 0;
+};
+void BM_RefSurfacePiece(benchmark::State& state, const char* name) {
+  const scene::CompiledScene sc = demo(name);
+  const ref::ModelScene m = ref::quantize_scene(sc, ref::HwParams{});
+  std::vector<SurfaceItem> items;
+  const int stride = std::max(1, static_cast<int>(m.camera.width / 48));
+  for (int j = 0; j < m.camera.height; j += stride)
+    for (int i = 0; i < m.camera.width; i += stride) {
+      const ref::IVec3 vhat = ref::ray_generator(m.params, m.camera, i, j).vhat;
+      for (std::size_t k = 0; k < m.surfaces.size(); ++k)
+        for (int q = 0; q < ref::surface_piece_items(m.surfaces[k].type); ++q)
+          if (ref::process_surface_piece(m.params, m.camera, vhat, m.surfaces[k], q).valid)
+            items.push_back({vhat, k, q});
+    }
+  if (items.empty()) {
+    state.SkipWithError("no valid surface piece");
+    return;
+  }
+  std::mt19937 rng(12345);
+  std::shuffle(items.begin(), items.end(), rng);
+  if (items.size() > 1000) items.resize(1000);
+  int hits = 0;
+  for (const auto& w : items)
+    hits += ref::process_surface_piece(m.params, m.camera, w.vhat, m.surfaces[w.surface], w.piece).hit;
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    const SurfaceItem& w = items[idx];
+    benchmark::DoNotOptimize(
+        ref::process_surface_piece(m.params, m.camera, w.vhat, m.surfaces[w.surface], w.piece));
+    if (++idx == items.size()) idx = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["items"] = static_cast<double>(items.size());
+  state.counters["hit_frac"] = static_cast<double>(hits) / static_cast<double>(items.size());
+}
+BENCHMARK_CAPTURE(BM_RefSurfacePiece, ellipsoid, "surf_ellipsoid");
+BENCHMARK_CAPTURE(BM_RefSurfacePiece, relief, "surf_relief");
+BENCHMARK_CAPTURE(BM_RefSurfacePiece, spiral, "surf_spiral");
+BENCHMARK_CAPTURE(BM_RefSurfacePiece, snail, "surf_snail");
+BENCHMARK_CAPTURE(BM_RefSurfacePiece, rocket, "surf_rocket");
+
 // A whole frame of `--backend ref` at full resolution, all cores, default parameters.
 void BM_RefFrame(benchmark::State& state, const char* name) {
   const scene::CompiledScene sc = demo(name);
@@ -178,9 +228,16 @@ void BM_RefFrame(benchmark::State& state, const char* name) {
   state.counters["pairs/ray"] = pairs / pixels;
   state.counters["curve_pairs"] = static_cast<double>(stats.curve_pairs);
   state.counters["texture_pairs"] = static_cast<double>(stats.texture_pairs);
+  if (stats.surface_pairs > 0) {
+    state.counters["surface_pieces"] = static_cast<double>(stats.surface_pieces);
+    state.counters["pieces/s/core"] = benchmark::Counter(
+        static_cast<double>(stats.surface_pieces) / cores, benchmark::Counter::kIsIterationInvariantRate);
+  }
 }
 BENCHMARK_CAPTURE(BM_RefFrame, curve12, "curve12")->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_RefFrame, airfield, "airfield")->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RefFrame, surf_spiral, "surf_spiral")->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RefFrame, surf_mix, "surf_mix")->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -92,6 +92,11 @@ std::string nurbs_patch(const std::string& weights) {
                      weights + "}]");
 }
 
+// A scene with one surface: `members` is the text inside its object.
+std::string one_surface(const std::string& members) {
+  return with_camera(R"("surfaces": [{)" + members + "}]");
+}
+
 
 struct BadCase {
   std::string name;
@@ -338,6 +343,120 @@ std::vector<BadCase> bad_cases() {
       {"bspline_weights_key", bspline_patch(R"("size": [3, 2], "weights": [1,1,1,1,1,1])", R"([0,0,0,1,1,1])", R"([0,0,1,1])", 6),
        "patches[0].weights", "unknown key 'weights'"},
       {"patch_color", bezier_patch(R"(, "color": [0, 2, 0])"), "patches[0].color[1]", "[0, 1]"},
+      // Surfaces (ALGORITHM 3, seed 004).
+      {"surfaces_object", with_camera(R"("surfaces": {"type": "snail"})"), "surfaces",
+       "expected an array of surfaces, got an object"},
+      {"surface_not_object", with_camera(R"("surfaces": [{"type": "snail"}, 3])"), "surfaces[1]",
+       "expected an object, got 3"},
+      {"surface_missing_type", one_surface(R"("a": 1)"), "surfaces[0]", "missing required key 'type'"},
+      {"surface_type_number", one_surface(R"("type": 2)"), "surfaces[0].type", "expected a string"},
+      {"surface_unknown_type", one_surface(R"("type": "torus")"), "surfaces[0].type",
+       "unknown surface type \"torus\"; expected ellipsoid, relief_ellipsoid, spiral, snail or rocket"},
+      {"surface_unknown_key", one_surface(R"("type": "rocket", "colour": [1, 0, 0])"),
+       "surfaces[0].colour", "unknown key 'colour'"},
+      {"ellipsoid_key_of_relief", one_surface(R"("type": "ellipsoid", "d": 1)"), "surfaces[0].d",
+       "unknown key 'd'"},
+      {"rocket_key_of_ellipsoid", one_surface(R"("type": "rocket", "y_range": [0, 1])"),
+       "surfaces[0].y_range", "unknown key 'y_range'"},
+      {"snail_key_of_spiral", one_surface(R"("type": "snail", "R": 1)"), "surfaces[0].R",
+       "unknown key 'R'"},
+      {"spiral_key_of_ellipsoid", one_surface(R"("type": "spiral", "y_range": [0, 1])"),
+       "surfaces[0].y_range", "unknown key 'y_range'"},
+      {"ellipsoid_phi_max", one_surface(R"("type": "ellipsoid", "phi_max": 3)"),
+       "surfaces[0].phi_max", "unknown key 'phi_max'"},
+      {"ellipsoid_a_zero", one_surface(R"("type": "ellipsoid", "a": 0)"), "surfaces[0].a",
+       "a must be greater than 0, got 0"},
+      {"ellipsoid_b_negative", one_surface(R"("type": "ellipsoid", "b": -2)"), "surfaces[0].b",
+       "b must be greater than 0, got -2"},
+      {"relief_c_negative", one_surface(R"("type": "relief_ellipsoid", "c": -1.3)"), "surfaces[0].c",
+       "c must be greater than 0"},
+      {"spiral_b_zero", one_surface(R"("type": "spiral", "b": 0)"), "surfaces[0].b",
+       "b must be greater than 0"},
+      {"spiral_a_negative", one_surface(R"("type": "spiral", "a": -0.01)"), "surfaces[0].a",
+       "a must be greater than 0"},
+      {"size_tiny", one_surface(R"("type": "ellipsoid", "c": 1e-300)"), "surfaces[0].c",
+       "too small to compute with"},
+      {"size_string", one_surface(R"("type": "ellipsoid", "a": "1")"), "surfaces[0].a",
+       "expected a number, got a string"},
+      {"size_inf", one_surface(R"("type": "ellipsoid", "a": 1e999)"), "surfaces[0].a",
+       "not a finite number"},
+      {"size_huge", one_surface(R"("type": "rocket", "b": 1e10)"), "surfaces[0].b",
+       "out of range: 10000000000.0; surface parameters must be finite with magnitude at most 1e+09"},
+      {"snail_a_zero", one_surface(R"("type": "snail", "a": 0)"), "surfaces[0].a",
+       "a must be greater than 0, got 0"},
+      {"snail_a_negative", one_surface(R"("type": "snail", "a": -0.01)"), "surfaces[0].a",
+       "a must be greater than 0"},
+      {"relief_d_equals_e", one_surface(R"("type": "relief_ellipsoid", "d": 0.4)"), "surfaces[0].d",
+       "the relief needs d > |e| so that k = d + e·sin 10φ·cos 9y stays above 0; got d = 0.4, e = 0.4"},
+      {"relief_negative_e", one_surface(R"("type": "relief_ellipsoid", "e": -1.5)"), "surfaces[0].e",
+       "d > |e|"},
+      {"relief_d_negative", one_surface(R"("type": "relief_ellipsoid", "d": -2, "e": 0.1)"),
+       "surfaces[0].d", "d > |e|"},
+      {"rocket_e_zero", one_surface(R"("type": "rocket", "e": 0)"), "surfaces[0].e",
+       "e must be greater than 0"},
+      {"rocket_c_zero", one_surface(R"("type": "rocket", "c": 0)"), "surfaces[0].c",
+       "c must be greater than 0"},
+      {"rocket_d_negative", one_surface(R"("type": "rocket", "d": -0.1)"), "surfaces[0].d",
+       "d (the fins' radius increase) must be at least 0, got -0.1"},
+      {"spiral_section_reaches_axis", one_surface(R"("type": "spiral", "R": 0.5)"), "surfaces[0].R",
+       "the section reaches the axis: R + a·φ must exceed max(b, c) = 0.64 for every φ in [0, "
+       "phi_max], got 0.5"},
+      {"spiral_section_touches_axis", one_surface(R"("type": "spiral", "R": 0.64)"), "surfaces[0].R",
+       "the section reaches the axis"},
+      {"spiral_section_too_wide", one_surface(R"("type": "spiral", "c": 0.8)"), "surfaces[0].c",
+       "must exceed max(b, c) = 0.8"},
+      {"spiral_section_too_tall", one_surface(R"("type": "spiral", "b": 0.9)"), "surfaces[0].b",
+       "must exceed max(b, c) = 0.9"},
+      {"phi_max_zero", one_surface(R"("type": "spiral", "phi_max": 0)"), "surfaces[0].phi_max",
+       "phi_max must be greater than 0, got 0"},
+      {"phi_max_negative", one_surface(R"("type": "snail", "phi_max": -1)"), "surfaces[0].phi_max",
+       "phi_max must be greater than 0"},
+      {"phi_max_nine_turns", one_surface(R"("type": "snail", "phi_max": 56.6)"), "surfaces[0].phi_max",
+       "phi_max must be at most 16π = 50.2655 (the hardware follows at most 8 turns), got 56.6"},
+      {"phi_max_just_above", one_surface(R"("type": "spiral", "phi_max": 50.266)"),
+       "surfaces[0].phi_max", "at most 8 turns"},
+      {"y_range_one_number", one_surface(R"("type": "ellipsoid", "y_range": [0])"),
+       "surfaces[0].y_range", "expected an array of 2 numbers [lo, hi], got an array of 1"},
+      {"y_range_number", one_surface(R"("type": "ellipsoid", "y_range": 1)"), "surfaces[0].y_range",
+       "expected an array of 2 numbers"},
+      {"y_range_string", one_surface(R"("type": "ellipsoid", "y_range": [0, "1"])"),
+       "surfaces[0].y_range[1]", "expected a number, got a string"},
+      {"y_range_nan", one_surface(R"("type": "relief_ellipsoid", "y_range": [-1e999, 1])"),
+       "surfaces[0].y_range[0]", "not a finite number"},
+      {"y_range_empty", one_surface(R"("type": "ellipsoid", "y_range": [0.5, 0.5])"),
+       "surfaces[0].y_range", "the range is empty or inverted: lo = 0.5 must be less than hi = 0.5"},
+      {"y_range_inverted", one_surface(R"("type": "relief_ellipsoid", "y_range": [1, -1])"),
+       "surfaces[0].y_range", "empty or inverted"},
+      {"y_range_below_b", one_surface(R"("type": "ellipsoid", "y_range": [-2.5, 0])"),
+       "surfaces[0].y_range", "the range must lie within [-b, b] = [-2, 2]"},
+      {"y_range_above_given_b", one_surface(R"("type": "relief_ellipsoid", "b": 1, "y_range": [-1, 1.5])"),
+       "surfaces[0].y_range", "within [-b, b] = [-1, 1]"},
+      {"scale_zero", one_surface(R"("type": "snail", "scale": 0)"), "surfaces[0].scale",
+       "scale of 0; expected a uniform scale greater than 0"},
+      {"scale_negative", one_surface(R"("type": "snail", "scale": -2)"), "surfaces[0].scale",
+       "scale must be greater than 0, got -2"},
+      {"scale_inf", one_surface(R"("type": "snail", "scale": 1e999)"), "surfaces[0].scale",
+       "not a finite number"},
+      {"scale_tiny", one_surface(R"("type": "snail", "scale": 1e-12)"), "surfaces[0].scale",
+       "scale is too small to compute with"},
+      {"scale_string", one_surface(R"("type": "snail", "scale": "2")"), "surfaces[0].scale",
+       "expected a number, got a string"},
+      {"rotation_two", one_surface(R"("type": "rocket", "rotation_deg": [0, 90])"),
+       "surfaces[0].rotation_deg", "expected an array of 3 numbers (degrees about x, y, z), got an array of 2"},
+      {"rotation_number", one_surface(R"("type": "rocket", "rotation_deg": 90)"),
+       "surfaces[0].rotation_deg", "expected an array of 3 numbers"},
+      {"rotation_nan", one_surface(R"("type": "rocket", "rotation_deg": [0, 1e999, 0])"),
+       "surfaces[0].rotation_deg[1]", "not a finite number"},
+      {"position_two", one_surface(R"("type": "rocket", "position": [0, 1])"), "surfaces[0].position",
+       "expected an array of 3 numbers, got an array of 2"},
+      {"position_huge", one_surface(R"("type": "rocket", "position": [0, 0, 1e200])"),
+       "surfaces[0].position[2]", "out of range: 1e+200"},
+      {"surface_color", one_surface(R"("type": "rocket", "color": [0, 1.5, 0])"),
+       "surfaces[0].color[1]", "[0, 1]"},
+      {"extent_too_large", one_surface(R"("type": "snail", "a": 1e7, "scale": 100)"), "surfaces[0]",
+       "the snail reaches"},
+      {"extent_near_limit", one_surface(R"("type": "ellipsoid", "position": [1e9, 0, 0])"),
+       "surfaces[0]", "coordinates must stay within 1e+09"},
       // Raw parser text never leaks: no "[json.exception...]" (checked for every case below).
       {"invalid_utf8", mutate(R"("test scene")", "\"te\xffst\""), "", "invalid JSON at line 2"},
       {"nested_too_deep", with_camera(R"("about": )" + std::string(100, '[')), "about" +
@@ -437,6 +556,162 @@ TEST(SceneJson, PatchesRoundTrip) {
   ASSERT_EQ(c.primitives.size(), 5u);
   EXPECT_EQ(c.primitives[4].kind, Primitive::Kind::kPatch);
   EXPECT_EQ(c.patches.size(), 5u);
+}
+
+TEST(SceneJson, SurfacesRoundTrip) {
+  const Scene s = parse_scene(with_camera(R"("surfaces": [
+    {"type": "ellipsoid", "a": 1.5, "b": 3, "c": 0.5, "y_range": [-1, 2.5],
+     "position": [1, -2, 3], "rotation_deg": [10, -20, 370], "scale": 0.25, "color": [0.2, 0.6, 1]},
+    {"type": "relief_ellipsoid", "a": 2, "b": 1, "c": 1, "d": 0.5, "e": -0.25, "y_range": [-0.5, 1]},
+    {"type": "spiral", "R": 2, "k": -0.3, "a": 0.05, "b": 0.5, "c": 1.5, "phi_max": 20},
+    {"type": "snail", "a": 0.02, "phi_max": 12.5},
+    {"type": "rocket", "a": 0.3, "b": 2, "c": 0.5, "d": 0, "e": 0.7}])"), kSource);
+  ASSERT_EQ(s.surfaces.size(), 5u);
+  const Surface& el = s.surfaces[0];
+  EXPECT_EQ(el.type, SurfaceType::kEllipsoid);
+  EXPECT_EQ(el.p.a, 1.5);
+  EXPECT_EQ(el.p.b, 3.0);
+  EXPECT_EQ(el.p.c, 0.5);
+  EXPECT_EQ(el.p.y_min, -1.0);
+  EXPECT_EQ(el.p.y_max, 2.5);
+  EXPECT_EQ(el.position, (Vec3{1, -2, 3}));
+  EXPECT_EQ(el.rotation_deg, (Vec3{10, -20, 370}));
+  EXPECT_EQ(el.scale, 0.25);
+  EXPECT_EQ(el.color, (Color{0.2, 0.6, 1}));
+  const Surface& re = s.surfaces[1];
+  EXPECT_EQ(re.type, SurfaceType::kReliefEllipsoid);
+  EXPECT_EQ(re.p.a, 2.0);
+  EXPECT_EQ(re.p.d, 0.5);
+  EXPECT_EQ(re.p.e, -0.25);
+  EXPECT_EQ(re.p.y_min, -0.5);
+  EXPECT_EQ(re.p.y_max, 1.0);
+  EXPECT_EQ(re.scale, 1.0);
+  EXPECT_EQ(re.color, (Color{1, 1, 1}));
+  const Surface& sp = s.surfaces[2];
+  EXPECT_EQ(sp.type, SurfaceType::kSpiral);
+  EXPECT_EQ(sp.p.R, 2.0);
+  EXPECT_EQ(sp.p.k, -0.3);
+  EXPECT_EQ(sp.p.a, 0.05);
+  EXPECT_EQ(sp.p.b, 0.5);
+  EXPECT_EQ(sp.p.c, 1.5);
+  EXPECT_EQ(sp.p.phi_max, 20.0);
+  EXPECT_EQ(s.surfaces[3].type, SurfaceType::kSnail);
+  EXPECT_EQ(s.surfaces[3].p.a, 0.02);
+  EXPECT_EQ(s.surfaces[3].p.phi_max, 12.5);
+  const Surface& ro = s.surfaces[4];
+  EXPECT_EQ(ro.type, SurfaceType::kRocket);
+  EXPECT_EQ(ro.p.a, 0.3);
+  EXPECT_EQ(ro.p.b, 2.0);
+  EXPECT_EQ(ro.p.c, 0.5);
+  EXPECT_EQ(ro.p.d, 0.0);
+  EXPECT_EQ(ro.p.e, 0.7);
+}
+
+// Every parameter is optional: the seed's values (SCENE.md), y_range following the file's b.
+TEST(SceneJson, SurfaceDefaults) {
+  const Scene s = parse_scene(with_camera(R"("surfaces": [{"type": "ellipsoid"},
+    {"type": "relief_ellipsoid"}, {"type": "spiral"}, {"type": "snail"}, {"type": "rocket"},
+    {"type": "ellipsoid", "b": 4}, {"type": "relief_ellipsoid", "b": 0.5}])"), kSource);
+  ASSERT_EQ(s.surfaces.size(), 7u);
+  for (const Surface& f : s.surfaces) {
+    EXPECT_EQ(f.position, (Vec3{0, 0, 0}));
+    EXPECT_EQ(f.rotation_deg, (Vec3{0, 0, 0}));
+    EXPECT_EQ(f.scale, 1.0);
+    EXPECT_EQ(f.color, (Color{1, 1, 1}));
+  }
+  const SurfaceParams& el = s.surfaces[0].p;
+  EXPECT_EQ(el.a, 1.0);
+  EXPECT_EQ(el.b, 2.0);
+  EXPECT_EQ(el.c, 1.0);
+  EXPECT_EQ(el.y_min, -2.0);
+  EXPECT_EQ(el.y_max, 1.0);
+  const SurfaceParams& re = s.surfaces[1].p;
+  EXPECT_EQ(re.a, 1.0);
+  EXPECT_EQ(re.b, 2.0);
+  EXPECT_EQ(re.c, 1.3);
+  EXPECT_EQ(re.d, 1.0);
+  EXPECT_EQ(re.e, 0.4);
+  EXPECT_EQ(re.y_min, -2.0);
+  EXPECT_EQ(re.y_max, 2.0);
+  const SurfaceParams& sp = s.surfaces[2].p;
+  EXPECT_EQ(sp.R, 0.7);
+  EXPECT_EQ(sp.k, 0.5);
+  EXPECT_EQ(sp.a, 0.2);
+  EXPECT_EQ(sp.b, 0.16);
+  EXPECT_EQ(sp.c, 0.64);
+  EXPECT_EQ(sp.phi_max, 11.0);
+  const SurfaceParams& sn = s.surfaces[3].p;
+  EXPECT_EQ(sn.a, 0.01);
+  EXPECT_DOUBLE_EQ(sn.phi_max, 10.0 * 3.14159265358979323846);
+  const SurfaceParams& ro = s.surfaces[4].p;
+  EXPECT_EQ(ro.a, 0.2);
+  EXPECT_EQ(ro.b, 1.0);
+  EXPECT_EQ(ro.c, 0.8);
+  EXPECT_EQ(ro.d, 0.2);
+  EXPECT_EQ(ro.e, 0.4);
+  EXPECT_EQ(s.surfaces[5].p.y_min, -4.0);
+  EXPECT_EQ(s.surfaces[5].p.y_max, 2.0);
+  EXPECT_EQ(s.surfaces[6].p.y_min, -0.5);
+  EXPECT_EQ(s.surfaces[6].p.y_max, 0.5);
+  // The same values from default_surface_params.
+  for (size_t k = 0; k < 5; ++k) {
+    const SurfaceParams d = default_surface_params(s.surfaces[k].type);
+    const SurfaceParams& p = s.surfaces[k].p;
+    EXPECT_EQ(std::vector<double>({d.a, d.b, d.c, d.d, d.e, d.R, d.k, d.phi_max, d.y_min, d.y_max}),
+              std::vector<double>({p.a, p.b, p.c, p.d, p.e, p.R, p.k, p.phi_max, p.y_min, p.y_max}))
+        << surface_type_name(s.surfaces[k].type);
+  }
+}
+
+// The edges of every rule are accepted.
+TEST(SceneJson, SurfaceEdgeValues) {
+  const Scene s = parse_scene(with_camera(R"("surfaces": [
+    {"type": "ellipsoid", "y_range": [-2, 2]},
+    {"type": "ellipsoid", "b": 1e-9, "y_range": [-1e-9, 1e-9]},
+    {"type": "relief_ellipsoid", "d": 0.41, "e": -0.4},
+    {"type": "spiral", "R": 0.6401},
+    {"type": "spiral", "phi_max": 50.26548245743669, "k": 0},
+    {"type": "snail", "phi_max": 50.26548245743669},
+    {"type": "snail", "scale": 1e-9},
+    {"type": "rocket", "d": 0, "rotation_deg": [-720, 1e6, 45]},
+    {"type": "rocket", "position": [9.9e8, 0, 0], "scale": 10}])"), kSource);
+  ASSERT_EQ(s.surfaces.size(), 9u);
+  EXPECT_EQ(s.surfaces[3].p.R, 0.6401);
+  EXPECT_EQ(s.surfaces[5].p.phi_max, 16.0 * 3.14159265358979323846);
+  EXPECT_EQ(s.surfaces[7].p.d, 0.0);
+}
+
+// Primitive ids run curves, textures, surfaces, patches; each kind indexes its own list.
+TEST(SceneJson, SurfacePrimitiveIds) {
+  const Scene s = parse_scene(with_camera(R"(
+    "curves": [{"points": [[0, 0, 0], [1, 0, 0]]}, {"points": [[0, 1, 0], [1, 1, 0]]}],
+    "textures": [{"points": [[0, 0], [1, 0]], "half_width": 0.5}],
+    "surfaces": [{"type": "rocket", "color": [1, 0, 0]}, {"type": "snail", "color": [0, 1, 0]}],
+    "patches": [{"type": "bezier", "degree": [1, 1], "control_points": [[0,0,0],[1,0,0],[0,1,0],[1,1,1]]}])"),
+                              kSource);
+  const CompiledScene c = compile_scene(s);
+  ASSERT_EQ(c.primitives.size(), 6u);
+  EXPECT_EQ(c.first_surface_primitive, 3);
+  EXPECT_EQ(c.first_patch_primitive, 5);
+  EXPECT_EQ(c.primitives[2].kind, Primitive::Kind::kTexture);
+  EXPECT_EQ(c.primitives[3].kind, Primitive::Kind::kSurface);
+  EXPECT_EQ(c.primitives[3].index, 0);
+  EXPECT_EQ(c.primitives[4].kind, Primitive::Kind::kSurface);
+  EXPECT_EQ(c.primitives[4].index, 1);
+  EXPECT_EQ(c.primitives[4].color, (Color{0, 1, 0}));
+  EXPECT_EQ(c.primitives[5].kind, Primitive::Kind::kPatch);
+  ASSERT_EQ(c.surfaces.size(), 2u);
+  EXPECT_EQ(c.surfaces[0].primitive, 3);
+  EXPECT_EQ(c.surfaces[1].primitive, 4);
+  EXPECT_EQ(c.surfaces[1].surface.type, SurfaceType::kSnail);
+  EXPECT_GT(c.surfaces[1].radius, 0.0);
+  for (const auto& seg : c.curve_segments) EXPECT_LT(seg.primitive, 2);
+  for (const auto& seg : c.texture_segments) EXPECT_EQ(seg.primitive, 2);
+  // Without surfaces, the patches follow the textures as before.
+  const CompiledScene none = compile_scene(parse_scene(with_camera(R"("curves": [{"points": [[0, 0, 0], [1, 0, 0]]}])"), kSource));
+  EXPECT_EQ(none.first_surface_primitive, 1);
+  EXPECT_EQ(none.first_patch_primitive, 1);
+  EXPECT_TRUE(none.surfaces.empty());
 }
 
 TEST(SceneJson, Defaults) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "model/surface_descriptors.h"
 
 namespace rpu::ref {
 namespace {
@@ -108,13 +109,19 @@ Precision precision_of(const scene::CompiledScene& sc, const Normalization& norm
   // The nearest interpolation sphere (texture: its region) in front of or around the eye. A
   // sphere holding the eye has geometry arbitrarily near it, as any perspective view may; the
   // position criterion is about cameras far from the scene, so those spheres do not count.
+  // A surface counts by its bounding sphere.
   double nearest = std::numeric_limits<double>::infinity();
-  const auto consider = [&](const Vec3& c0, double R) {
+  const char* nearest_kind = "segment";
+  const auto consider = [&](const Vec3& c0, double R, const char* kind) {
     const double d = length(c0 - sc.camera.eye) - R;
-    if (d > 0.0) nearest = std::min(nearest, d);
+    if (d > 0.0 && d < nearest) {
+      nearest = d;
+      nearest_kind = kind;
+    }
   };
-  for (const auto& s : sc.curve_segments) consider(s.geom.c0, s.geom.R);
-  for (const auto& s : sc.texture_segments) consider(s.geom.c0, s.geom.R + s.half_width);
+  for (const auto& s : sc.curve_segments) consider(s.geom.c0, s.geom.R, "segment");
+  for (const auto& s : sc.texture_segments) consider(s.geom.c0, s.geom.R + s.half_width, "segment");
+  for (const auto& s : sc.surfaces) consider(s.centre, s.radius, "surface");
   if (std::isfinite(nearest)) pr.position_lsb_per_pixel = sigma * nearest * norm.scale;
   const bool pos_low = pr.position_lsb_per_pixel > 0 && pr.position_lsb_per_pixel < Precision::kHold;
   const bool dir_low = pr.direction_lsb_per_pixel < Precision::kHold;
@@ -123,8 +130,8 @@ Precision precision_of(const scene::CompiledScene& sc, const Normalization& norm
   if (!pos_low && !dir_low) return pr;
   std::string what, raise;
   if (pos_low) {
-    what = fmt::format("{:.0f} position LSBs (coord_w = {}) at the nearest segment",
-                       pr.position_lsb_per_pixel, p.coord_w);
+    what = fmt::format("{:.0f} position LSBs (coord_w = {}) at the nearest {}",
+                       pr.position_lsb_per_pixel, p.coord_w, nearest_kind);
     raise = fmt::format("--coord-w {}", pr.coord_w_needed);
   }
   if (dir_low) {
@@ -164,12 +171,14 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
   ModelScene m;
   m.source = sc.source;
   m.params = p;
-  // Normalisation: the bounding box of the eye, every interpolation sphere and every texture
-  // region, centred and scaled into kRangeUse of the signed coord_w range.
+  // Normalisation: the bounding box of the eye, every interpolation sphere, every texture
+  // region and every surface's bounding sphere, centred and scaled into kRangeUse of the signed
+  // coord_w range.
   Bounds b;
   b.add(sc.camera.eye);
   for (const auto& s : sc.curve_segments) b.add(s.geom.c0, s.geom.R);
   for (const auto& s : sc.texture_segments) b.add(s.geom.c0, s.geom.R + s.half_width);
+  for (const auto& s : sc.surfaces) b.add(s.centre, s.radius);
   const Vec3 centre = (b.lo + b.hi) * 0.5;
   const double half = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z}) * 0.5;
   m.norm.offset = centre;
@@ -229,6 +238,11 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
     m.curve_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
   for (const auto& cs : sc.texture_segments)
     m.texture_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
+  for (const auto& cs : sc.surfaces) {
+    const auto& prim = sc.primitives.at(static_cast<size_t>(cs.primitive));
+    m.surfaces.push_back(quantize_surface(
+        cs, m.norm, p, fmt::format("{}: surfaces[{}]", sc.source, prim.index)));
+  }
   // After the segments, whose message names the segment that does not fit.
   m.precision = precision_of(sc, m.norm, p);
   return m;

@@ -2,6 +2,7 @@
 // bit-accurate model and to the RTL. Every field's format is in docs/fixed-point.md.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -52,6 +53,59 @@ struct SegmentDesc {
   std::int32_t primitive = 0;
 };
 
+// A per-surface constant of any magnitude in block floating point (as 1/L²): value = m · 2^-s,
+// the mantissa a signed HwParams::surf_mant_w()-bit integer, 2^(MW-3) ≤ |m| ≤ 2^(MW-2), or 0.
+// A product x·c is floor(x · m · 2^-(s - keep)), keeping `keep` fraction bits (const_product).
+struct ScaledConst {
+  i64 m = 0;
+  int s = 0;
+  bool operator==(const ScaledConst&) const = default;
+};
+
+// The spiral and snail evaluate their turns in parallel lanes: phi_max ≤ 16π (the scene reader's
+// limit) needs at most 8 (turns m = 0..7 in range at any azimuth).
+inline constexpr int kSurfaceTurnLanes = 8;
+
+// A vector-described surface (ALGORITHM 3, docs/surfaces.md) quantised for the surface path
+// (rpu_surface_setup, rpu_indicator, rpu_surface_ip). "llsb" is the surface's local LSB:
+// 2^local_frac llsb per local unit, local_frac chosen per surface so that its local bounding box
+// fills a quarter of the signed LW range. Formats: docs/fixed-point.md, "Surfaces".
+struct SurfaceDesc {
+  scene::SurfaceType type = scene::SurfaceType::kEllipsoid;
+  std::int32_t primitive = 0;
+  // The bounding sphere in the sphere unit's port format (c0, R2 in LSB, LSB²); d = 0, so the
+  // sphere unit's chord parameters α, β are 0 and unused.
+  SegmentDesc bound;
+  // World LSB → llsb: local = floor(M · (X − origin) · 2^-to_local_s), M's entries normalised to
+  // signed MW bits as one block (rotationᵀ / scale folded with 2^local_frac / S).
+  IVec3 origin;                // the placement `position`, LSB (rounded)
+  std::array<i64, 9> to_local{};  // M, row-major
+  int to_local_s = 0;
+  int local_frac = 0;          // F (compiler and tests only: the datapath never shifts by it)
+  // Slab (ellipsoid, relief ellipsoid, rocket): the piece is the part with y_min ≤ y ≤ y_max.
+  i64 y_min = 0, y_max = 0;    // llsb
+  // Azimuth range (spiral, snail): φ ∈ [0, phi_max]; phi_max = full_turns turns + end_angle.
+  int full_turns = 0;          // floor(phi_max / 2π)
+  std::uint64_t end_angle = 0; // phi_max mod 2π, binary angle (AW bits); 0: no second plane
+  i64 end_cos = 0, end_sin = 0;  // cos, sin of end_angle, Q(1.KF): the end plane's
+                                 // x·cos − z·sin = 0
+  // Ellipsoid: (x·sx)² + (y·sy)² + (z·sz)² < r2 with sx = m/a, sy = m/b, sz = m/c, m = min(a,b,c).
+  // Relief ellipsoid: (x·sx)² + (z·sz)² < k'²·(r2 − (y·sy)²), sx = m/(a·kmax), sy = m/b,
+  //   sz = m/(c·kmax), kmax = d + |e|, m = min(a·kmax, b, c·kmax), k' = k/kmax.
+  // Spiral: the section test (u·sx)² + (w·sy)² < r2 with sx = m/c, sy = m/b, m = min(b, c).
+  i64 sx = 0, sy = 0, sz = 0;  // Q(1.KF), in (0, 1]
+  i128 r2 = 0;                 // (m · 2^(F+G))², (llsb·2^G)², rounded
+  // Relief: k' = kd + ke2·(sin(10φ + 9y) + sin(10φ − 9y)) (= d' + e'·sin 10φ·cos 9y).
+  i64 kd = 0, ke2 = 0;         // d/kmax, e/(2·kmax), Q(1.KF)
+  ScaledConst y_angle;         // 9y in binary-angle units per llsb: 9·2^(AW−F)/(2π)
+  // Spiral: axis point (rho0 + aφ, kφ); snail: radius aφ (φ_m from ψ and m in binary angle).
+  i64 rho0 = 0;                // R, llsb
+  i64 a_turn = 0, k_turn = 0;  // 2π·a, 2π·k: llsb per full turn of φ
+  // Rocket: fins a + (sin 5ψ − 1)·y·d/c (y ≤ 0), cylinder a, cone a − (y − b)·a/e (y ≥ b).
+  i64 rocket_a = 0, rocket_b = 0;  // a, b, llsb
+  ScaledConst fin, cone;       // d/c, a/e
+};
+
 struct CameraDesc {
   IVec3 eye;        // h, LSB
   IVec3 v0;         // direction of pixel (0,0)'s centre, Q(4.FV+14) (unnormalised)
@@ -90,6 +144,7 @@ struct ModelScene {
   CameraDesc camera;
   std::vector<SegmentDesc> curve_segments;    // same order as CompiledScene::curve_segments
   std::vector<SegmentDesc> texture_segments;  // same order as CompiledScene::texture_segments
+  std::vector<SurfaceDesc> surfaces;          // same order as CompiledScene::surfaces
 };
 
 // Quantises a compiled scene for the given parameters. Throws rpu::Error when the parameters

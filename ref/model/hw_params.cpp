@@ -26,6 +26,14 @@ void HwParams::validate() const {
   check_range("--edge-frac", "edge-vector fraction bits", edge_frac, 8, 40);
   check_range("--inv-w", "1/L² mantissa width", inv_w, 8, 40);
   if (sqrt_w != 0) check_range("--sqrt-w", "square-root radicand width", sqrt_w, 16, 126);
+  check_range("--surf-w", "surface-local coordinate width", surf_w, 16, kMaxSurfW);
+  check_range("--angle-w", "binary-angle width", angle_w, 12, 32);
+  // The surface CORDIC runs AW micro-rotations on surf_cordic_w() = LW + 6 bits; it takes at
+  // most its width + 4 stages (rpu_cordic.h).
+  if (angle_w > surf_cordic_w() + 4)
+    throw Error("--angle-w", fmt::format("angle_w = {} needs more CORDIC stages than a {}-bit "
+                                         "CORDIC takes (surf_w = {}: at most {})", angle_w,
+                                         surf_cordic_w(), surf_w, surf_cordic_w() + 4));
   // The widest intermediate products must fit 126 bits (the model's __int128 and a sane RTL).
   const int alpha_product = 2 * diff_w() + 3 + inv_w + 1;  // ((A - p1)·d)·m
   if (alpha_product > 126)
@@ -45,11 +53,13 @@ std::string HwParams::describe() const {
   return fmt::format(
       "n          = {}\nn1         = {}\nK          = {}\ncandidates = {} per step ({} new after "
       "the first)\ncoord_w    = {}\ndir_frac   = {}\nt_frac     = {}\nunit_frac  = {}\n"
-      "edge_frac  = {}\ninv_w      = {}\nsqrt_w     = {}\nmetric     = {}\nip         = {}\n",
+      "edge_frac  = {}\ninv_w      = {}\nsqrt_w     = {}\nmetric     = {}\nip         = {}\n"
+      "surf_w     = {}\nangle_w    = {}\n",
       n, n1, K(), J() + 1, J() - 1, coord_w, dir_frac, t_frac, unit_frac, edge_frac, inv_w,
       sqrt_w == 0 ? std::string("exact (no pre-shift)") : std::to_string(sqrt_w),
       metric == Metric::kAbs ? "abs" : "squared",
-      unrolled ? "unrolled (K step units, one pair per cycle)" : "iterative (one step unit, K passes)");
+      unrolled ? "unrolled (K step units, one pair per cycle)" : "iterative (one step unit, K passes)",
+      surf_w, angle_w);
 }
 
 }  // namespace rpu::ref

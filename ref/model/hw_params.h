@@ -22,6 +22,10 @@ struct HwParams {
   Metric metric = Metric::kAbs;
   bool unrolled = true;  // K step units in a pipeline (one pair per cycle), or one step unit
                          // reused K times (iterative); the results are identical
+  // Vector-described surfaces (ALGORITHM 3; docs/fixed-point.md, "Surfaces").
+  int surf_w = 24;       // LW: signed width of surface-local coordinates; each surface is scaled
+                         // by a power of two so that its bounding box fills a quarter of it
+  int angle_w = 20;      // AW: bits of a binary angle (2^AW = one full turn) in the indicators
 
   bool operator==(const HwParams&) const = default;  // the same hardware (every parameter)
 
@@ -49,6 +53,17 @@ struct HwParams {
   int guide_radicand_w() const { return 2 * coord_w + 10; }  // h² + L²w with h ≤ 16 L
   int dist_radicand_w() const { return 2 * coord_w + 8; }    // |pr - X|²
   int sphere_radicand_w() const { return 2 * coord_w + 5; }  // R² - |q|² + tc²
+  // Surfaces: guard bits G of the scaled local coordinates (x·k floored to G bits below the
+  // local LSB before squaring), the fraction bits KF of the per-surface scale constants in
+  // (0, 1] (Q(1.KF)), the mantissa width MW of the other constants (block floating point, as
+  // inv_m), the fraction bits SF of the piece parameter s ∈ [0, 1], and the CORDIC width w (its
+  // inputs |v| ≤ 2^(w-2) = 2^(LW+G+2): the scaled coordinates and the spiral's offsets fit).
+  static constexpr int kSurfGuard = 2;
+  static constexpr int kMaxSurfW = 36;
+  int surf_const_frac() const { return surf_w; }
+  int surf_mant_w() const { return surf_w + 2; }
+  int surf_cut_frac() const { return surf_w + 2; }
+  int surf_cordic_w() const { return surf_w + kSurfGuard + 4; }
 
   // Throws rpu::Error naming the flag when a value or combination is invalid.
   void validate() const;

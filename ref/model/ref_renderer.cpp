@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/parallel.h"
+#include "model/rpu_surface_top.h"
 #include "model/units.h"
 #include "scene/screen_bins.h"
 
@@ -21,13 +22,14 @@ image::Frame render_ref(const scene::CompiledScene& sc, const ModelScene& m,
   const scene::ClassificationGrid grid =
       scene::ClassificationGrid::build(sc.texture_segments, 2.0, 2.0 / m.norm.scale);
   std::atomic<std::uint64_t> curve_pairs{0}, texture_pairs{0}, overflow_pairs{0};
+  std::atomic<std::uint64_t> surface_pairs{0}, surface_pieces{0};
   struct Row {
     const ModelScene* m;
     const RefOptions* o;
     const scene::ScreenBins* bins;
     const scene::ClassificationGrid* grid;
     image::Frame* frame;
-    std::uint64_t curve = 0, texture = 0, ovf = 0;
+    std::uint64_t curve = 0, texture = 0, ovf = 0, surf = 0, pieces = 0;
     void operator()(int j) {
       const HwParams& p = m->params;
       const CameraDesc& cam = m->camera;
@@ -60,6 +62,16 @@ image::Frame render_ref(const scene::CompiledScene& sc, const ModelScene& m,
             }
           }
         }
+        for (const SurfaceDesc& s : m->surfaces) {
+          ++surf;
+          const int items = surface_piece_items(s.type);
+          for (int k = 0; k < items; ++k) {
+            const SurfacePieceResult r = process_surface_piece(p, cam, ray.vhat, s, k);
+            pieces += r.valid;
+            ovf += r.overflow;
+            if (r.hit) resolve.offer(r.depth, s.primitive);
+          }
+        }
         const size_t idx = frame->index(i, j);
         frame->primitive[idx] = resolve.any ? resolve.primitive : image::kBackground;
         frame->depth[idx] = resolve.any ? static_cast<double>(resolve.depth) : 0.0;
@@ -70,11 +82,15 @@ image::Frame render_ref(const scene::CompiledScene& sc, const ModelScene& m,
                 [&](const Row& r) {
                   curve_pairs += r.curve;
                   texture_pairs += r.texture;
+                  surface_pairs += r.surf;
+                  surface_pieces += r.pieces;
                   overflow_pairs += r.ovf;
                 });
   if (stats) {
     stats->curve_pairs = curve_pairs;
     stats->texture_pairs = texture_pairs;
+    stats->surface_pairs = surface_pairs;
+    stats->surface_pieces = surface_pieces;
     stats->overflow_pairs = overflow_pairs;
   }
   return frame;

@@ -8,6 +8,7 @@
 #include "model/rpu_candidate.h"
 #include "model/rpu_capture.h"
 #include "model/rpu_chord.h"
+#include "model/rpu_cordic.h"
 #include "model/rpu_curve_point.h"
 #include "model/rpu_fifo.h"
 #include "model/rpu_guide_pair.h"

@@ -1,5 +1,6 @@
 // The scene compiler's output (host side of the hardware): camera constants, per-segment
-// constants of every curve and texture, and the texture classification grid.
+// constants of every curve and texture, the texture classification grid, and the placed
+// vector-described surfaces.
 #pragma once
 
 #include <string>
@@ -9,15 +10,17 @@
 #include "scene/classification_grid.h"
 #include "scene/scene.h"
 #include "scene/segment.h"
+#include "scene/surface.h"
 
 namespace rpu::scene {
 
-// A primitive is one curve or one texture; its id orders equal-depth hits (lower wins) and
-// indexes the colour table. Curves come first (ids 0..C-1), then textures, then patches.
+// A primitive is one curve, texture, surface or patch; its id orders equal-depth hits (lower
+// wins) and indexes the colour table. Curves come first (ids 0..C-1), then textures, then
+// surfaces (from first_surface_primitive), then patches (from first_patch_primitive).
 struct Primitive {
-  enum class Kind { kCurve, kTexture, kPatch };
+  enum class Kind { kCurve, kTexture, kSurface, kPatch };
   Kind kind = Kind::kCurve;
-  int index = 0;  // index within scene.curves or scene.textures
+  int index = 0;  // index within scene.curves, .textures, .surfaces or .patches
   Color color{};
 };
 
@@ -36,6 +39,10 @@ struct CompiledScene {
   std::vector<CompiledSegment> curve_segments;
   std::vector<CompiledSegment> texture_segments;
   ClassificationGrid texture_grid;  // over texture_segments
+  // Vector-described surfaces (ALGORITHM 3), primitive ids first_surface_primitive + k, in the
+  // order of scene.surfaces: frame and bounding sphere (scene/surface.h).
+  std::vector<CompiledSurface> surfaces;
+  int first_surface_primitive = 0;
   // Parametric patches (ALGORITHM 4), primitive ids first_patch_primitive + k; the float
   // backends only (ref/patch/), the fixed-point model and the RTL refuse them.
   std::vector<Patch> patches;

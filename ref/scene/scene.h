@@ -8,6 +8,7 @@
 
 #include "common/limits.h"
 #include "common/vec3.h"
+#include "scene/surface.h"
 
 namespace rpu::scene {
 
@@ -60,6 +61,7 @@ struct Scene {
   Color background{0.0, 0.0, 0.0};
   std::vector<Curve> curves;
   std::vector<Texture> textures;
+  std::vector<Surface> surfaces;  // ALGORITHM 3 (seed 004), scene/surface.h
   std::vector<Patch> patches;  // ALGORITHM 4; float backend only (no fixed-point path)
 };
 

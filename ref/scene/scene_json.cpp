@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <numbers>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -354,6 +355,180 @@ std::vector<Patch> patches(const Json& j, const Where& w) {
   return out;
 }
 
+// ---- surfaces (ALGORITHM 3, seed 004; docs/surfaces.md) ----
+
+// Smallest accepted size parameter and scale: below it the local frame's 1/scale and the
+// indicators' (x/a)² leave the range the coordinate limit is meant to keep (limits.h).
+constexpr double kMinSurfaceSize = 1e-9;
+
+// The hardware's phi_max limit: 8 turns (ALGORITHM 3, the spiral and snail turn counter).
+constexpr double kMaxSurfaceTurns = 8.0;
+
+// A surface parameter: a finite number with |v| <= limits::kMaxCoordinate.
+double surface_number(const Json& j, const Where& w) {
+  const double v = number(j, w);
+  if (std::fabs(v) > limits::kMaxCoordinate)
+    w.fail("out of range: " + j.dump() + "; surface parameters must be finite with magnitude at "
+           "most " + fmt::format("{:g}", limits::kMaxCoordinate) + " (README, \"Limits\")");
+  return v;
+}
+
+// A size parameter: > 0 (at least kMinSurfaceSize), within the coordinate range.
+double surface_size(const Json& j, const Where& w, const char* what) {
+  const double v = surface_number(j, w);
+  if (!(v > 0.0)) w.fail(std::string(what) + " must be greater than 0, got " + j.dump());
+  if (v < kMinSurfaceSize)
+    w.fail(fmt::format("{} is too small to compute with: {}; at least {:g}", what, j.dump(),
+                       kMinSurfaceSize));
+  return v;
+}
+
+SurfaceType surface_type(const Json& obj, const Where& w) {
+  const Json& t = required(obj, w, "type");
+  constexpr const char* kTypes = "ellipsoid, relief_ellipsoid, spiral, snail or rocket";
+  if (!t.is_string()) w.key("type").fail(std::string("expected a string (") + kTypes + "), got " + describe(t));
+  const std::string name = t.get<std::string>();
+  for (const SurfaceType s : {SurfaceType::kEllipsoid, SurfaceType::kReliefEllipsoid,
+                              SurfaceType::kSpiral, SurfaceType::kSnail, SurfaceType::kRocket})
+    if (name == surface_type_name(s)) return s;
+  w.key("type").fail("unknown surface type " + t.dump() + "; expected " + kTypes);
+}
+
+Surface surface(const Json& j, const Where& w) {
+  if (!j.is_object()) w.fail("expected an object, got " + describe(j));
+  const SurfaceType type = surface_type(j, w);
+  switch (type) {
+    case SurfaceType::kEllipsoid:
+      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "b", "c", "y_range"});
+      break;
+    case SurfaceType::kReliefEllipsoid:
+      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "b", "c", "d",
+                           "e", "y_range"});
+      break;
+    case SurfaceType::kSpiral:
+      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "R", "k", "a",
+                           "b", "c", "phi_max"});
+      break;
+    case SurfaceType::kSnail:
+      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "phi_max"});
+      break;
+    case SurfaceType::kRocket:
+      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "b", "c", "d", "e"});
+      break;
+  }
+  Surface s;
+  s.type = type;
+  s.p = default_surface_params(type);
+  SurfaceParams& p = s.p;
+  const char* name = surface_type_name(type);
+
+  // Placement.
+  if (const Json* v = find_key(j, "position")) s.position = vec(*v, w.key("position"), 3);
+  if (const Json* v = find_key(j, "rotation_deg")) {
+    const Where wr = w.key("rotation_deg");
+    if (!v->is_array() || v->size() != 3)
+      wr.fail("expected an array of 3 numbers (degrees about x, y, z), got " + describe(*v));
+    s.rotation_deg = {surface_number((*v)[0], wr.index(0)), surface_number((*v)[1], wr.index(1)),
+                      surface_number((*v)[2], wr.index(2))};
+  }
+  if (const Json* v = find_key(j, "scale")) {
+    const Where ws = w.key("scale");
+    s.scale = surface_number(*v, ws);
+    if (s.scale == 0.0) ws.fail("scale of 0; expected a uniform scale greater than 0");
+    if (!(s.scale > 0.0)) ws.fail("scale must be greater than 0, got " + v->dump());
+    if (s.scale < kMinSurfaceSize)
+      ws.fail(fmt::format("scale is too small to compute with: {}; at least {:g}", v->dump(),
+                          kMinSurfaceSize));
+  }
+  if (const Json* v = find_key(j, "color")) s.color = color(*v, w.key("color"));
+
+  // Parameters: each optional, the seed's default otherwise (default_surface_params).
+  const auto size = [&](const char* key, double& out) {
+    if (const Json* v = find_key(j, key)) out = surface_size(*v, w.key(key), key);
+  };
+  const auto any = [&](const char* key, double& out) {
+    if (const Json* v = find_key(j, key)) out = surface_number(*v, w.key(key));
+  };
+  const auto phi_max = [&] {
+    const Json* v = find_key(j, "phi_max");
+    if (!v) return;
+    const Where wp = w.key("phi_max");
+    p.phi_max = surface_number(*v, wp);
+    if (!(p.phi_max > 0.0)) wp.fail("phi_max must be greater than 0, got " + v->dump());
+    if (p.phi_max > kMaxSurfaceTurns * 2.0 * std::numbers::pi)
+      wp.fail(fmt::format("phi_max must be at most 16π = {:.6g} (the hardware follows at most {:g} "
+                          "turns), got {}", kMaxSurfaceTurns * 2.0 * std::numbers::pi,
+                          kMaxSurfaceTurns, v->dump()));
+  };
+  const auto y_range = [&] {
+    // Default: the type's range in units of b (SCENE.md), for the b read above.
+    p.y_min = -p.b;
+    p.y_max = type == SurfaceType::kEllipsoid ? 0.5 * p.b : p.b;
+    const Json* v = find_key(j, "y_range");
+    if (!v) return;
+    const Where wy = w.key("y_range");
+    if (!v->is_array() || v->size() != 2)
+      wy.fail("expected an array of 2 numbers [lo, hi], got " + describe(*v));
+    p.y_min = surface_number((*v)[0], wy.index(0));
+    p.y_max = surface_number((*v)[1], wy.index(1));
+    if (!(p.y_min < p.y_max))
+      wy.fail(fmt::format("the range is empty or inverted: lo = {} must be less than hi = {}",
+                          (*v)[0].dump(), (*v)[1].dump()));
+    if (p.y_min < -p.b || p.y_max > p.b)
+      wy.fail(fmt::format("the range must lie within [-b, b] = [{:g}, {:g}] (the {} has no section "
+                          "outside), got {}", -p.b, p.b, name, v->dump()));
+  };
+
+  switch (type) {
+    case SurfaceType::kEllipsoid:
+      size("a", p.a), size("b", p.b), size("c", p.c);
+      y_range();
+      break;
+    case SurfaceType::kReliefEllipsoid:
+      size("a", p.a), size("b", p.b), size("c", p.c);
+      any("d", p.d), any("e", p.e);
+      if (!(p.d > std::fabs(p.e)))
+        w.key(find_key(j, "d") ? "d" : "e")
+            .fail(fmt::format("the relief needs d > |e| so that k = d + e·sin 10φ·cos 9y stays "
+                              "above 0; got d = {:g}, e = {:g}", p.d, p.e));
+      y_range();
+      break;
+    case SurfaceType::kSpiral: {
+      any("R", p.R), any("k", p.k);
+      size("a", p.a), size("b", p.b), size("c", p.c);
+      phi_max();
+      // R + aφ is linear in φ: its smallest value on [0, phi_max] is at an end (with a > 0, R).
+      // Named at R when the file gives it, else at the larger of b and c.
+      const double nearest = std::min(p.R, p.R + p.a * p.phi_max);
+      if (!(nearest > std::max(p.b, p.c)))
+        w.key(find_key(j, "R") ? "R" : p.b >= p.c ? "b" : "c")
+            .fail(fmt::format("the section reaches the axis: R + a·φ must exceed max(b, c) = {:g} "
+                              "for every φ in [0, phi_max], got {:g}", std::max(p.b, p.c), nearest));
+      break;
+    }
+    case SurfaceType::kSnail:
+      size("a", p.a);
+      phi_max();
+      break;
+    case SurfaceType::kRocket:
+      size("a", p.a), size("b", p.b), size("c", p.c), size("e", p.e);
+      if (const Json* v = find_key(j, "d")) {
+        p.d = surface_number(*v, w.key("d"));
+        if (!(p.d >= 0.0)) w.key("d").fail("d (the fins' radius increase) must be at least 0, got " + v->dump());
+      }
+      break;
+  }
+
+  // The whole surface must stay in the coordinate range (its world bounding sphere).
+  const CompiledSurface c = compile_surface(s, 0);
+  const double reach = std::max({std::fabs(c.centre.x), std::fabs(c.centre.y), std::fabs(c.centre.z)}) + c.radius;
+  if (!(reach <= limits::kMaxCoordinate))
+    w.fail(fmt::format("the {} reaches {:.3g} from the origin (bounding radius {:.3g} in world "
+                       "units); coordinates must stay within {:g} (README, \"Limits\")",
+                       name, reach, c.radius, limits::kMaxCoordinate));
+  return s;
+}
+
 // An array whose elements are read by `element`.
 template <class T, class F>
 std::vector<T> array_of(const Json& j, const Where& w, const char* what, F element) {
@@ -370,7 +545,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   const Where top{source, ""};
   if (!j.is_object())
     top.fail("expected a JSON object at the top level, got " + describe(j));
-  expect_object(j, top, {"about", "camera", "background", "curves", "textures", "patches"});
+  expect_object(j, top,
+                {"about", "camera", "background", "curves", "textures", "surfaces", "patches"});
 
   Scene scene;
   scene.source = source;
@@ -383,6 +559,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     scene.curves = array_of<Curve>(*c, top.key("curves"), "curves", curve);
   if (const Json* t = find_key(j, "textures"))
     scene.textures = array_of<Texture>(*t, top.key("textures"), "textures", texture);
+  if (const Json* s = find_key(j, "surfaces"))
+    scene.surfaces = array_of<Surface>(*s, top.key("surfaces"), "surfaces", surface);
   if (const Json* p = find_key(j, "patches")) scene.patches = patches(*p, top.key("patches"));
   return scene;
 }

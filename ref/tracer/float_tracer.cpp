@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <thread>
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include "common/error.h"
 #include "common/parallel.h"
 #include "scene/screen_bins.h"
+#include "tracer/surface_tracer.h"
 
 namespace rpu::tracer {
 
@@ -223,13 +225,18 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
   const CameraFrame& cam = sc.camera;
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(cam, sc.curve_segments, 8, o.binning);
+  const SurfaceTracer surfaces(sc, o.method, o.n, o.n1);
   std::atomic<std::uint64_t> tested{0}, hits{0}, texture_tested{0};
+  SurfaceStats surface_stats;
+  std::mutex surface_mutex;
   struct Row {
     const CompiledScene* sc;
     const FloatOptions* o;
     const scene::ScreenBins* bins;
+    const SurfaceTracer* surfaces;
     image::Frame* frame;
     std::uint64_t tested = 0, hits = 0, texture = 0;
+    SurfaceStats surface{};
     void operator()(int j) {
       const CameraFrame& cam = sc->camera;
       for (int i = 0; i < cam.width; ++i) {
@@ -249,22 +256,32 @@ image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, Render
           }
         }
         shade_textures(*sc, *o, i, j, hit, texture);
+        double surface_depth = 0.0;
+        std::int32_t surface_id = image::kBackground;
+        if (!surfaces->empty() && surfaces->trace_pixel(i, j, surface_depth, surface_id, surface))
+          hit.offer(surface_depth, surface_id);
         const size_t idx = frame->index(i, j);
         frame->primitive[idx] = hit.primitive;
         frame->depth[idx] = hit.primitive == image::kBackground ? 0.0 : hit.depth;
       }
     }
   };
-  parallel_rows(cam.height, o.threads, Row{&sc, &o, &bins, &frame},
+  parallel_rows(cam.height, o.threads, Row{&sc, &o, &bins, &surfaces, &frame},
                 [&](const Row& r) {
                   tested += r.tested;
                   hits += r.hits;
                   texture_tested += r.texture;
+                  const std::lock_guard<std::mutex> lock(surface_mutex);
+                  surface_stats += r.surface;
                 });
   if (stats) {
     stats->pairs_tested = tested;
     stats->pairs_hit = hits;
     stats->texture_pairs_tested = texture_tested;
+    stats->surface_pairs_tested = surface_stats.pairs_tested;
+    stats->surface_pieces = surface_stats.pieces;
+    stats->surface_pairs_hit = surface_stats.pairs_hit;
+    stats->surface_evaluations = surface_stats.evaluations;
   }
   return frame;
 }

@@ -3,6 +3,7 @@
 //                                      pixel-centre ray by a global search, then the PVP capture.
 //   kIterative (`--backend float-ip`): the seeds' iterative process (ALGORITHM 1.2) exactly.
 // Vector textures (ALGORITHM 2) have no iteration and render the same in both methods.
+// Vector-described surfaces (ALGORITHM 3) are traced by tracer/surface_tracer.h in both methods.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +35,10 @@ struct RenderStats {
   std::uint64_t pairs_tested = 0;          // ray/curve-segment pairs examined after binning
   std::uint64_t pairs_hit = 0;             // of those, pairs whose test point was captured
   std::uint64_t texture_pairs_tested = 0;  // ray/texture-segment pairs listed by the grid
+  std::uint64_t surface_pairs_tested = 0;  // ray/surface pairs (every pixel × every surface)
+  std::uint64_t surface_pieces = 0;        // pieces of the pairs that met the bounding sphere
+  std::uint64_t surface_pairs_hit = 0;     // ray/surface pairs with a hit
+  std::uint64_t surface_evaluations = 0;   // surface inside tests evaluated
 };
 
 image::Frame render_float(const scene::CompiledScene& scene, const FloatOptions& options,
