@@ -37,9 +37,12 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   bool rtl_ok = false, rtl_ran = false;
   nlohmann::json not_applicable = nlohmann::json::array(), patch_stats;
   for (const std::string& b : backend_names()) {
-    if (!backend_applies(b, sc)) {  // patches: no fixed-point path (ALGORITHM 4)
+    if (!backend_applies(b, sc)) {  // patches: float only (ALGORITHM 4); surfaces: no RTL yet
       not_applicable.push_back(b);
-      if (!o.quiet) std::cerr << fmt::format("  {:<8} not applicable (patches: float only)\n", b);
+      if (!o.quiet)
+        std::cerr << fmt::format("  {:<8} not applicable ({})\n", b,
+                                 !sc.patches.empty() ? "patches: float only"
+                                                     : "surfaces: float and ref only");
       continue;
     }
     if (b == "rtl" && o.skip_rtl) continue;
@@ -94,6 +97,7 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
     for (const auto& line : in.mismatch_lines) std::cerr << line << "\n";
     std::cerr << fmt::format("{}: report {}\n",
                              !sc.patches.empty() ? "PATCHES (float backends only, ref/rtl not applicable)"
+                             : !sc.surfaces.empty() ? "SURFACES (float backends and ref, rtl not applicable)"
                              : !rtl_ran          ? "NO RTL (--no-rtl)"
                              : rtl_differs       ? "FAIL"
                                                  : "PASS",

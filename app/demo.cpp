@@ -71,7 +71,7 @@ int run_demo(const DemoOptions& options) {
   std::vector<int> codes(scenes.size(), 0);
   std::vector<std::string> errors(scenes.size());
   // Backends a scene's primitives have no path through (compare's "not_applicable": ref and rtl
-  // for patches, and for surfaces until the model traces them) and what the scene holds.
+  // for patches, rtl for surfaces until the RTL traces them) and what the scene holds.
   const auto not_applicable = [&](size_t k) {
     const auto it = metrics[k].find("not_applicable");
     std::string list;
@@ -108,7 +108,7 @@ int run_demo(const DemoOptions& options) {
                                : !not_applicable(k).empty()
                                    ? fmt::format("{}: float backends{} ({} not applicable)",
                                                  float_only_kinds(loaded[k]),
-                                                 loaded[k].patches.empty() ? ""
+                                                 loaded[k].patches.empty() ? " and ref"
                                                      : " and every patch method",
                                                  not_applicable(k))
                                : co.skip_rtl      ? std::string("software backends only (--no-rtl)")

@@ -35,10 +35,21 @@ inline long vector_count(long fallback) {
 inline std::string to_string(i128 v) { return fixed::to_decimal(v); }
 
 // Writing a `width`-bit two's-complement value into a Verilator port of any size.
-inline void put(CData& port, i128 v, int) { port = static_cast<CData>(v); }
-inline void put(SData& port, i128 v, int) { port = static_cast<SData>(v); }
-inline void put(IData& port, i128 v, int) { port = static_cast<IData>(v); }
-inline void put(QData& port, i128 v, int) { port = static_cast<QData>(v); }
+// Only the port's `width` bits are written: Verilator assumes the bits above a narrow port are
+// zero, so a negative value must not set them (they would leak into the logic).
+inline u128 port_mask(int width) { return width >= 128 ? ~u128{0} : (u128{1} << width) - 1; }
+inline void put(CData& port, i128 v, int width) {
+  port = static_cast<CData>(static_cast<u128>(v) & port_mask(width));
+}
+inline void put(SData& port, i128 v, int width) {
+  port = static_cast<SData>(static_cast<u128>(v) & port_mask(width));
+}
+inline void put(IData& port, i128 v, int width) {
+  port = static_cast<IData>(static_cast<u128>(v) & port_mask(width));
+}
+inline void put(QData& port, i128 v, int width) {
+  port = static_cast<QData>(static_cast<u128>(v) & port_mask(width));
+}
 template <std::size_t N>
 void put(VlWide<N>& port, i128 v, int width) {
   const u128 u = static_cast<u128>(v);
