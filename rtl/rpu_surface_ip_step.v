@@ -1,0 +1,335 @@
+// rpu_surface_ip_step: one pass of the surface sign search (docs/surfaces.md, "The iterative
+// process on a piece"), twin of rpu::ref::surface_ip_start (pass 0) and surface_ip_step (pass k,
+// k = 1..K). τ is an N-bit dyadic index m (τ = m·2^-N); the candidate at m is
+//   pr_local(m) = lA' + floor(lAB'·m·2^-N)          (llsb; every product an rpu_mul)
+// and its inside bit comes from an rpu_indicator, one per candidate lane.
+//   pass 0    lanes 0, 1 evaluate m = 0 and m = 2^N: lo = s(0), hi = s(2^N), τ = 0.
+//   pass k    lanes e = 0 .. J−2 evaluate m = τ + (e + 1)·2^(N − N1·k) (the bits are disjoint
+//             from τ's, so an OR); with s_0 = lo, s_J = hi the change bits c_j = s_j ^ s_{j+1}
+//             (j = 0 .. J−1) are registered, then the lowest set one as a one-hot vector selects
+//             η: τ' = τ | η·2^(N − N1·k), lo' = s_η, hi' = s_{η+1} (an AND-OR over the
+//             one-hot). No change bit: the piece misses (live' = 0; only possible at k = 1).
+// Pass = k wired in (the unrolled form), or Pass = −1: k and its shift N − N1·k come with the
+// item (the iterative form, one unit used K + 1 times); the unit hands out the next pass's k + 1
+// and N − N1·(k + 1), each one carry chain in the change-bit stage, so the ring's input (a mux)
+// feeds the multipliers through the shift of j only, no adder.
+//
+// State {τ, lo, hi, live, ovf} (StW = N + 4 bits, τ on top): live = the piece is searched and has
+// not missed; ovf = the sticky overflow of the twin (some indicator of a live pass saturated).
+// A pass on an item that is not live changes nothing and flags nothing (the twin stops
+// evaluating after a miss, and never runs a piece that does not exist).
+//
+// Lanes: 2 for pass 0, J − 1 for pass k, max(J − 1, 2) at Pass = −1; a lane a pass does not use
+// evaluates a don't-care point and its overflow is masked.
+//
+// Pipeline (one item per cycle, no stall; context: the lane-0 units' tags):
+//   Lm     lAB'_c · m_e: 3 rpu_mul per lane, (LW + 1) × (N + 2) signed (one DSP48E1 at the
+//          defaults); m_e = τ | j·2^shift in front of the multipliers' input registers
+//   1      l = lA' + (p >>> N), exact in LW bits (between lA' and lB'), registered
+//   Lind   rpu_indicator per lane
+//   1      change bits, lane overflow (masked) registered
+//   1      one-hot select, next state registered
+// Latency = Lm + 1 + Lind + 2 (rpu_surface_pass_latency, rpu_surface_latency.vh;
+// ref::surface_ip_pass_latency; 80 at the defaults).
+// The descriptor, lA' and the branch bits ride the lane-0 x product's tag to the indicators
+// (Lm + 1 cycles); ctx_i rides the whole pass.
+`default_nettype none
+
+module rpu_surface_ip_step #(
+  parameter integer SurfW  = 24,  // LW: signed width of surface-local coordinates (16..36)
+  parameter integer AngleW = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
+  parameter integer Turns  = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
+  parameter integer N      = 16,  // result bits of τ (1..40)
+  parameter integer N1     = 2,   // bits per step (1..8), N % N1 == 0
+  parameter integer Pass   = -1,  // this unit's pass 0..N/N1, or −1: k_i at run time
+  parameter integer CtxW   = 1,   // caller's context passed through (>= 1)
+  // Derived (do not override).
+  parameter integer K      = N / N1,
+  parameter integer KW     = 8,                   // pass counter width
+  parameter integer ShW    = 8,                   // the step's shift N − N1·k
+  parameter integer StW    = N + 4,               // state {τ, lo, hi, live, ovf}
+  parameter integer LabW   = SurfW + 1,           // lB' − lA'
+  parameter integer DescW  = 15 * SurfW + 61      // the packed descriptor (rpu_surface_desc.vh)
+) (
+  input  wire               clk_i,
+  input  wire               rst_ni,
+  input  wire               valid_i,
+  input  wire [KW-1:0]      k_i,           // this pass (used when Pass == −1)
+  input  wire [ShW-1:0]     shift_i,       // N − N1·k_i (used when Pass == −1 and k_i > 0)
+  input  wire [StW-1:0]     state_i,
+  input  wire [3*SurfW-1:0] la_i,          // lA', llsb, {z, y, x}
+  input  wire [3*LabW-1:0]  lab_i,         // lB' − lA', llsb, {z, y, x}
+  input  wire               x_negative_i,  // the piece's azimuth branch (rpu_indicator)
+  input  wire               last_turn_i,
+  input  wire [DescW-1:0]   desc_i,        // the indicator's descriptor (rpu_surface_desc.vh)
+  input  wire [CtxW-1:0]    ctx_i,
+  output reg                valid_o,
+  output reg  [KW-1:0]      k_o,           // the next pass: k + 1
+  output reg  [ShW-1:0]     shift_o,       // its shift N − N1·(k + 1)
+  output reg  [StW-1:0]     state_o,
+  output reg  [CtxW-1:0]    ctx_o
+);
+`include "rpu_mul_latency.vh"
+`include "rpu_surface_latency.vh"
+`include "rpu_surface_desc.vh"
+  localparam integer LW    = SurfW;
+  localparam integer J     = 1 << N1;
+  localparam integer NStep = J - 1;                       // new candidates of a step
+  localparam integer NC    = Pass == 0 ? 2 : Pass > 0 ? NStep : (NStep > 2 ? NStep : 2);
+  localparam integer MW_   = N + 2;                       // m as a non-negative signed operand
+  localparam integer PW    = LabW + MW_;                  // lAB'_c · m, exact
+  localparam integer FW    = PW - N;                      // p >>> N: LW + 3 bits
+  localparam integer LInd  = rpu_surface_indicator_latency(SurfW, AngleW);
+  // The lane-0 x product's tag: {k, shift, state, ctx, la, x_negative, last_turn, desc}.
+  localparam integer SbW   = KW + ShW + StW + CtxW + 3 * LW + 2 + DescW;
+  // The lane-0 indicator's tag: {k, shift, state, ctx}.
+  localparam integer ItW   = KW + ShW + StW + CtxW;
+
+  initial begin
+    if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_surface_ip_step: SurfW must be in 16..36");
+    if (N < 1 || N > 40) $fatal(1, "rpu_surface_ip_step: N must be in 1..40");
+    if (N1 < 1 || N1 > 8) $fatal(1, "rpu_surface_ip_step: N1 must be in 1..8");
+    if (N % N1 != 0) $fatal(1, "rpu_surface_ip_step: N must be a multiple of N1");
+    if (Pass < -1 || Pass > K) $fatal(1, "rpu_surface_ip_step: Pass must be in -1..N/N1");
+    if (CtxW < 1) $fatal(1, "rpu_surface_ip_step: CtxW must be >= 1");
+    if (K != N / N1 || KW != 8 || ShW != 8 || StW != N + 4 || LabW != SurfW + 1 ||
+        DescW != SdW)
+      $fatal(1, "rpu_surface_ip_step: derived parameters must not be overridden");
+  end
+
+  genvar e, c;
+
+  // ---- the candidates' m and the products lAB'_c · m_e ----
+  wire [KW-1:0]  k_in    = Pass < 0 ? k_i : Pass[KW-1:0];
+  wire           start   = k_in == {KW{1'b0}};
+  wire [N-1:0]   tau_in  = state_i[StW-1 -: N];
+  localparam integer ShPass = N - N1 * (Pass < 0 ? 0 : Pass);
+  wire [ShW-1:0] shift   = Pass < 0 ? shift_i : ShPass[ShW-1:0];      // N − N1·k (k >= 1)
+  wire [SbW-1:0] sb_in   = {k_in, shift, state_i, ctx_i, la_i, x_negative_i, last_turn_i, desc_i};
+
+  wire [NC*3*PW-1:0] prod;
+  wire               p_valid;
+  wire [SbW-1:0]     p_sb;
+  generate
+    for (e = 0; e < NC; e = e + 1) begin : g_lane_m
+      localparam [N:0] JE = e + 1;                      // the lane's j in a step
+      localparam [N:0] M0 = e == 1 ? {1'b1, {N{1'b0}}}   // pass 0: m = 0 (lane 0), 2^N (lane 1)
+                                   : {(N+1){1'b0}};
+      wire [N:0] m_step = {1'b0, tau_in} | (JE << shift);
+      wire [N:0] m      = start ? M0 : m_step;
+      for (c = 0; c < 3; c = c + 1) begin : g_comp
+        if (e == 0 && c == 0) begin : g_carry
+          rpu_mul #(.AW(LabW), .BW(MW_), .Signed(1), .TagW(SbW)) u_mul (
+            .clk_i, .rst_ni, .valid_i, .a_i(lab_i[c*LabW +: LabW]), .b_i({1'b0, m}),
+            .tag_i(sb_in), .valid_o(p_valid), .p_o(prod[(3*e + c)*PW +: PW]), .tag_o(p_sb));
+        end else begin : g_plain
+          wire v_unused, t_unused;
+          rpu_mul #(.AW(LabW), .BW(MW_), .Signed(1), .TagW(1)) u_mul (
+            .clk_i, .rst_ni, .valid_i, .a_i(lab_i[c*LabW +: LabW]), .b_i({1'b0, m}),
+            .tag_i(1'b0), .valid_o(v_unused), .p_o(prod[(3*e + c)*PW +: PW]), .tag_o(t_unused));
+          wire unused_plain = ^{v_unused, t_unused};
+        end
+      end
+    end
+  endgenerate
+
+  // ---- l = lA' + floor(lAB'·m·2^-N): exact in LW bits (a point of the piece lA' .. lB') ----
+  wire [3*LW-1:0] p_la = p_sb[2 + DescW +: 3*LW];
+  reg             s1_valid_q;
+  reg [NC*3*LW-1:0] s1_l_q;
+  reg [ItW-1:0]   s1_it_q;       // {k, shift, state, ctx}
+  reg [1:0]       s1_branch_q;   // {x_negative, last_turn}
+  reg [DescW-1:0] s1_desc_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) s1_valid_q <= 1'b0;
+    else         s1_valid_q <= p_valid;
+  end
+  generate
+    for (e = 0; e < NC; e = e + 1) begin : g_lane_l
+      for (c = 0; c < 3; c = c + 1) begin : g_comp
+        wire [PW-1:0] p   = prod[(3*e + c)*PW +: PW];
+        wire [FW-1:0] f   = p[PW-1:N];                              // p >>> N (floor)
+        wire [LW-1:0] la  = p_la[c*LW +: LW];
+        wire [FW-1:0] sum = {{(FW-LW){la[LW-1]}}, la} + f;
+        always @(posedge clk_i) s1_l_q[(3*e + c)*LW +: LW] <= sum[LW-1:0];  // exact (above)
+        wire unused_sum = ^{sum[FW-1:LW], p[N-1:0]};  // the bits the floor drops
+      end
+    end
+  endgenerate
+  always @(posedge clk_i) begin
+    s1_it_q     <= p_sb[SbW-1 -: ItW];
+    s1_branch_q <= p_sb[DescW +: 2];
+    s1_desc_q   <= p_sb[DescW-1:0];
+  end
+
+  // ---- the indicators ----
+  wire [NC-1:0]  ind_inside, ind_ovf;
+  wire           ind_valid;
+  wire [ItW-1:0] ind_it;
+  `define RPU_SURFACE_IND_DESC(D) \
+    .type_i(D[SdTypeO +: 3]), .full_turns_i(D[SdFullO +: 4]), \
+    .sx_i(D[SdSxO +: SdKF + 1]), .sy_i(D[SdSyO +: SdKF + 1]), .sz_i(D[SdSzO +: SdKF + 1]), \
+    .r2_i(D[SdR2O +: SdR2W]), .kd_i(D[SdKdO +: SdKF + 2]), .ke2_i(D[SdKe2O +: SdKF + 2]), \
+    .y_angle_m_i(D[SdYamO +: SdMW]), .y_angle_s_i(D[SdYasO +: 8]), \
+    .rho0_i(D[SdRho0O +: LW]), .a_turn_i(D[SdAturnO +: SdTurnW]), \
+    .k_turn_i(D[SdKturnO +: SdTurnW]), .rocket_a_i(D[SdRaO +: LW]), .rocket_b_i(D[SdRbO +: LW]), \
+    .fin_m_i(D[SdFinmO +: SdMW]), .fin_s_i(D[SdFinsO +: 8]), .cone_m_i(D[SdConemO +: SdMW]), \
+    .cone_s_i(D[SdConesO +: 8])
+  generate
+    for (e = 0; e < NC; e = e + 1) begin : g_ind
+      wire [Turns-1:0]  turns_unused;
+      wire [AngleW-1:0] angle_unused;
+      wire [LW+5:0]     rho_unused;
+      if (e == 0) begin : g_carry
+        rpu_indicator #(.SurfW(SurfW), .AngleW(AngleW), .Lanes(Turns), .TagW(ItW)) u_ind (
+          .clk_i, .rst_ni, .valid_i(s1_valid_q), .l_i(s1_l_q[e*3*LW +: 3*LW]),
+          .x_negative_i(s1_branch_q[1]), .last_turn_i(s1_branch_q[0]),
+          `RPU_SURFACE_IND_DESC(s1_desc_q), .tag_i(s1_it_q),
+          .valid_o(ind_valid), .inside_o(ind_inside[e]), .turn_inside_o(turns_unused),
+          .angle_o(angle_unused), .rho_o(rho_unused), .ovf_o(ind_ovf[e]), .tag_o(ind_it));
+      end else begin : g_plain
+        wire v_unused, t_unused;
+        rpu_indicator #(.SurfW(SurfW), .AngleW(AngleW), .Lanes(Turns), .TagW(1)) u_ind (
+          .clk_i, .rst_ni, .valid_i(s1_valid_q), .l_i(s1_l_q[e*3*LW +: 3*LW]),
+          .x_negative_i(s1_branch_q[1]), .last_turn_i(s1_branch_q[0]),
+          `RPU_SURFACE_IND_DESC(s1_desc_q), .tag_i(1'b0),
+          .valid_o(v_unused), .inside_o(ind_inside[e]), .turn_inside_o(turns_unused),
+          .angle_o(angle_unused), .rho_o(rho_unused), .ovf_o(ind_ovf[e]), .tag_o(t_unused));
+        wire unused_plain = ^{v_unused, t_unused};
+      end
+      wire unused_trace = ^{turns_unused, angle_unused, rho_unused};
+    end
+  endgenerate
+  `undef RPU_SURFACE_IND_DESC
+
+`ifndef SYNTHESIS
+  // The ring period and the top's admission count on LInd (rpu_surface_latency.vh): check it
+  // against the instance, so that a change of rpu_indicator's schedule stops the simulation.
+  reg [LInd-1:0] chk_valid_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) chk_valid_q <= {LInd{1'b0}};
+    else begin
+      chk_valid_q <= {chk_valid_q[LInd-2:0], s1_valid_q};
+      if (ind_valid != chk_valid_q[LInd-1])
+        $fatal(1, "rpu_surface_ip_step: rpu_indicator's latency is not %0d (rpu_surface_latency.vh)",
+               LInd);
+    end
+  end
+`endif
+
+  // ---- registered change bits (pass k) and the lanes' overflow, masked to the lanes used ----
+  wire [KW-1:0]   a_k     = ind_it[ItW-1 -: KW];
+  wire [ShW-1:0]  a_shift = ind_it[ItW-KW-1 -: ShW];
+  wire [StW-1:0]  a_st    = ind_it[CtxW +: StW];
+  wire            a_start = a_k == {KW{1'b0}};
+  wire [J:0]      s_in;                    // s_0 = lo, s_1 .. s_{J−1} the lanes, s_J = hi
+  assign s_in[0] = a_st[3];
+  assign s_in[J] = a_st[2];
+  generate
+    for (e = 1; e < J; e = e + 1) begin : g_s
+      if (e - 1 < NC) begin : g_lane
+        assign s_in[e] = ind_inside[e-1];
+      end else begin : g_none          // Pass = 0 with J − 1 > 2: no step here
+        assign s_in[e] = 1'b0;
+      end
+    end
+  endgenerate
+  wire [NC-1:0] use_step, use_start;      // the lanes a step / pass 0 uses
+  wire [1:0]    ends;                     // pass 0: {s(0), s(2^N)}
+  generate
+    for (e = 0; e < NC; e = e + 1) begin : g_use
+      assign use_step[e]  = e < NStep;
+      assign use_start[e] = e < 2;
+    end
+    if (NC >= 2) begin : g_ends
+      assign ends = {ind_inside[0], ind_inside[1]};
+    end else begin : g_no_ends            // Pass = k > 0 with N1 = 1: never pass 0
+      assign ends = 2'b00;
+    end
+  endgenerate
+  wire          lanes_ovf = |(ind_ovf & (a_start ? use_start : use_step));
+
+  reg            b_valid_q;
+  reg [KW-1:0]   b_k_q;
+  reg [ShW-1:0]  b_shift_q;
+  reg [KW-1:0]   b_knext_q;              // k + 1
+  reg [ShW-1:0]  b_shnext_q;             // N − N1·(k + 1): N1 below this pass's shift (N at k = 0)
+  reg [StW-1:0]  b_st_q;
+  reg [CtxW-1:0] b_ctx_q;
+  reg [J:0]      b_s_q;
+  reg [J-1:0]    b_chg_q;
+  reg [1:0]      b_ends_q;                 // pass 0: {s(0), s(2^N)}
+  reg            b_ovf_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) b_valid_q <= 1'b0;
+    else         b_valid_q <= ind_valid;
+  end
+  always @(posedge clk_i) begin
+    b_k_q      <= a_k;
+    b_shift_q  <= a_shift;
+    b_knext_q  <= a_k + 1'b1;
+    b_shnext_q <= (a_start ? N[ShW-1:0] : a_shift) - N1[ShW-1:0];
+    b_st_q     <= a_st;
+    b_ctx_q    <= ind_it[CtxW-1:0];
+    b_s_q      <= s_in;
+    b_chg_q    <= s_in[J-1:0] ^ s_in[J:1];
+    b_ends_q   <= ends;
+    b_ovf_q    <= lanes_ovf;
+  end
+
+  // ---- the one-hot of the lowest change bit, the AND-OR select, the next state ----
+  wire [N-1:0]   b_tau   = b_st_q[StW-1 -: N];
+  wire           b_live  = b_st_q[1];
+  wire           b_sovf  = b_st_q[0];
+  wire           b_start = b_k_q == {KW{1'b0}};
+  wire [ShW-1:0] b_shift = b_shift_q;
+  reg [J-1:0]    onehot;
+  reg            lower;
+  integer q;
+  always @(*) begin
+    lower = 1'b0;
+    for (q = 0; q < J; q = q + 1) begin
+      onehot[q] = b_chg_q[q] & ~lower;
+      lower     = lower | b_chg_q[q];
+    end
+  end
+  wire [J*N-1:0] tau_terms;               // η·2^shift for η = q, where selected
+  generate
+    for (e = 0; e < J; e = e + 1) begin : g_eta
+      localparam [N-1:0] Eta = e;
+      assign tau_terms[e*N +: N] = onehot[e] ? Eta << b_shift : {N{1'b0}};
+    end
+  endgenerate
+  reg [N-1:0] tau_sel;
+  always @(*) begin
+    tau_sel = {N{1'b0}};
+    for (q = 0; q < J; q = q + 1) tau_sel = tau_sel | tau_terms[q*N +: N];
+  end
+  wire lo_sel = |(onehot & b_s_q[J-1:0]);
+  wire hi_sel = |(onehot & b_s_q[J:1]);
+  wire           found = |b_chg_q;
+  reg [StW-1:0]  st_next;
+  always @(*) begin
+    if (b_start)
+      st_next = {{N{1'b0}}, b_ends_q, b_live, b_sovf | (b_live & b_ovf_q)};
+    else if (!b_live)
+      st_next = b_st_q;
+    else if (!found)                                    // step 1 without a change: a miss
+      st_next = {b_tau, b_st_q[3:2], 1'b0, b_sovf | b_ovf_q};
+    else
+      st_next = {b_tau | tau_sel, lo_sel, hi_sel, 1'b1, b_sovf | b_ovf_q};
+  end
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else         valid_o <= b_valid_q;
+  end
+  always @(posedge clk_i) begin
+    k_o     <= b_knext_q;
+    shift_o <= b_shnext_q;
+    state_o <= st_next;
+    ctx_o   <= b_ctx_q;
+  end
+endmodule
+
+`default_nettype wire

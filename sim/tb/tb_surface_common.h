@@ -1,0 +1,335 @@
+// Shared by tb_rpu_surface_ip and tb_rpu_surface_top: the demo scenes' surfaces quantised at the
+// build's parameters, the rays both benches drive (camera pixels, image-border pixels, grazing
+// rays, rays in the range planes, eyes inside the bounding sphere), and the indicator fields of
+// a SurfaceDesc on the ports both modules share with rpu_indicator.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "model/units.h"
+#include "scene/compiled_scene.h"
+#include "scene/scene_json.h"
+#include "scene/surface_geometry.h"
+#include "tb_common.h"
+
+namespace rpu::sim {
+
+// One surface of a demo scene, with its scene's camera.
+struct SurfCase {
+  std::string name;  // scene file and surface index
+  const scene::CompiledScene* scene = nullptr;
+  const scene::CompiledSurface* cs = nullptr;
+  ref::Normalization norm;
+  ref::SurfaceDesc d;
+  ref::CameraDesc cam;
+};
+
+// Every surface of scenes/surf_{ellipsoid,relief,spiral,snail,rocket,mix}.json at `p`; the
+// compiled scenes live in `keep` (a deque: stable addresses).
+inline std::vector<SurfCase> load_surface_cases(const char* source_dir, const ref::HwParams& p,
+                                                std::deque<scene::CompiledScene>& keep) {
+  std::vector<SurfCase> out;
+  for (const char* name : {"surf_ellipsoid", "surf_relief", "surf_spiral", "surf_snail",
+                           "surf_rocket", "surf_mix"}) {
+    keep.push_back(scene::compile_scene(
+        scene::load_scene(std::string(source_dir) + "/scenes/" + name + ".json")));
+    const ref::ModelScene m = ref::quantize_scene(keep.back(), p);
+    for (size_t k = 0; k < m.surfaces.size(); ++k)
+      out.push_back({std::string(name) + "[" + std::to_string(k) + "]", &keep.back(),
+                     &keep.back().surfaces[k], m.norm, m.surfaces[k], m.camera});
+  }
+  return out;
+}
+
+enum RaySource { kPixelNear, kPixelAny, kBorder, kGrazing, kPlane, kInsideEye, kRaySources };
+inline const char* const kRaySourceName[kRaySources] = {
+    "pixel near the surface", "any pixel", "image border", "grazing", "range plane",
+    "eye inside the sphere"};
+
+struct SurfRay {
+  RaySource src = kPixelAny;
+  int surf = 0;
+  int i = -1, j = -1;  // the camera pixel, or −1
+  ref::IVec3 eye, vhat;
+};
+
+inline Vec3 to_vec(const ref::IVec3& v) {
+  return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
+inline ref::IVec3 round3(const Vec3& v) {
+  return {std::llround(v.x), std::llround(v.y), std::llround(v.z)};
+}
+inline Vec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Vec3 u;
+  do u = {g(rng), g(rng), g(rng)};
+  while (length(u) < 1e-6);
+  return normalize(u);
+}
+// A direction quantised as the ray generator's v̂ (Q(2.FV)); zero for a zero vector.
+inline ref::IVec3 quantise_dir(const ref::HwParams& p, const Vec3& d) {
+  if (length(d) < 1e-12) return {};
+  const Vec3 u = normalize(d);
+  return {std::llround(std::ldexp(u.x, p.dir_frac)), std::llround(std::ldexp(u.y, p.dir_frac)),
+          std::llround(std::ldexp(u.z, p.dir_frac))};
+}
+
+// Rays of one surface from its scene's camera eye: `count` of them, about 45 % camera pixels at
+// or beside the projection of a random point of the surface, 10 % any pixel, 10 % image-border
+// pixels, 15 % grazing the bounding sphere (impact parameter R·(1 + ε), |ε| down to 2^-24), 20 %
+// aimed at points of the range planes inside the sphere (spiral, snail: the planes x = 0 and of
+// the end angle; the others: y = y_min, y_max), on them or a few llsb beside them.
+inline void camera_rays(const ref::HwParams& p, const SurfCase& S, int surf, int count,
+                        std::mt19937_64& rng, std::vector<SurfRay>& out) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const ref::CameraDesc& cam = S.cam;
+  const scene::CompiledSurface& cs = *S.cs;
+  const scene::SurfaceGeometry geom(cs.surface);
+  const scene::SurfaceParams& q = cs.surface.p;
+  const double llsb = std::ldexp(1.0, -S.d.local_frac);
+  const Vec3 c0 = to_vec(S.d.bound.c0);
+  const double R = std::sqrt(static_cast<double>(S.d.bound.R2));
+  const auto pixel = [&](RaySource src, int i, int j) {
+    out.push_back({src, surf, i, j, cam.eye, ref::ray_generator(p, cam, i, j).vhat});
+  };
+  const auto aim = [&](RaySource src, const Vec3& target) {
+    const ref::IVec3 v = quantise_dir(p, target - to_vec(cam.eye));
+    if (v.x != 0 || v.y != 0 || v.z != 0) out.push_back({src, surf, -1, -1, cam.eye, v});
+  };
+  for (int n = 0; n < count; ++n) {
+    const int kind = static_cast<int>(rng() % 100);
+    if (kind < 45) {
+      double phi = u01(rng) * 2 * std::numbers::pi, v = 0;
+      switch (cs.surface.type) {
+        case scene::SurfaceType::kEllipsoid:
+        case scene::SurfaceType::kReliefEllipsoid: v = q.y_min + (q.y_max - q.y_min) * u01(rng); break;
+        case scene::SurfaceType::kSpiral:
+        case scene::SurfaceType::kSnail:
+          phi = u01(rng) * q.phi_max;
+          v = u01(rng) * 2 * std::numbers::pi;
+          break;
+        case scene::SurfaceType::kRocket: v = -q.c + (q.b + q.e + q.c) * u01(rng); break;
+      }
+      int i, j;
+      if (!scene::project_to_pixel(S.scene->camera, cs.local_to_world(geom.point(phi, v)), i, j))
+        continue;
+      i = std::clamp(i + static_cast<int>(rng() % 5) - 2, 0, cam.width - 1);
+      j = std::clamp(j + static_cast<int>(rng() % 5) - 2, 0, cam.height - 1);
+      pixel(kPixelNear, i, j);
+    } else if (kind < 55) {
+      pixel(kPixelAny, static_cast<int>(rng() % static_cast<unsigned>(cam.width)),
+            static_cast<int>(rng() % static_cast<unsigned>(cam.height)));
+    } else if (kind < 65) {
+      const int e = static_cast<int>(rng() % 4), w = cam.width, h = cam.height;
+      const int i = e == 0 ? 0 : e == 1 ? w - 1 : static_cast<int>(rng() % static_cast<unsigned>(w));
+      const int j = e == 2 ? 0 : e == 3 ? h - 1 : static_cast<int>(rng() % static_cast<unsigned>(h));
+      pixel(kBorder, i, j);
+    } else if (kind < 80) {
+      // A tangent point of the sphere seen from the eye, pushed out or in by R·ε.
+      const Vec3 e = to_vec(cam.eye);
+      const Vec3 u = normalize(c0 - e);
+      Vec3 w = cross(u, random_unit(rng));
+      if (length(w) < 1e-3) continue;
+      w = normalize(w);
+      const double L = length(c0 - e);
+      if (L <= R) continue;
+      const double eps = (u01(rng) - 0.5) * std::ldexp(1.0, -static_cast<int>(rng() % 24));
+      const double b = R * L / std::sqrt(L * L - R * R) * (1.0 + eps);
+      aim(kGrazing, c0 + w * b);
+    } else {
+      // A point of a range plane inside the local bounding sphere (or `off` llsb beside it).
+      const double off = rng() % 3 == 0 ? 0.0 : (static_cast<double>(rng() % 9) - 4.0) * llsb;
+      const Vec3 lc = cs.local_centre;
+      const double lr = cs.local_radius * 0.95 * std::cbrt(u01(rng));
+      Vec3 l;
+      if (geom.has_azimuth_range()) {
+        const double a = rng() % 2 ? 0.0 : geom.end_azimuth();  // plane of azimuth a: normal
+        const Vec3 nrm{std::cos(a), 0, -std::sin(a)};           // (cos a, 0, −sin a)
+        l = lc + random_unit(rng) * lr;
+        l = l - nrm * dot(l, nrm) + nrm * off;
+      } else {
+        const double yb = static_cast<double>(rng() % 2 ? S.d.y_max : S.d.y_min) * llsb;
+        l = lc + random_unit(rng) * lr;
+        l.y = yb + off;
+      }
+      aim(kPlane, (cs.local_to_world(l) - S.norm.offset) * S.norm.scale);  // world LSB
+    }
+  }
+}
+
+// Rays from an eye inside the bounding sphere (within 0.9 R of its centre) in random directions.
+inline ref::IVec3 inside_eye(const SurfCase& S, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double R = std::sqrt(static_cast<double>(S.d.bound.R2));
+  return round3(to_vec(S.d.bound.c0) + random_unit(rng) * (0.9 * R * std::cbrt(u01(rng))));
+}
+inline void inside_rays(const ref::HwParams& p, const ref::IVec3& eye, int surf, int count,
+                        std::mt19937_64& rng, std::vector<SurfRay>& out) {
+  for (int n = 0; n < count; ++n)
+    out.push_back({kInsideEye, surf, -1, -1, eye, quantise_dir(p, random_unit(rng))});
+}
+
+// The piece indices a ray is issued with: every piece the host issues for the type, and now
+// and then one beyond them (never valid).
+inline std::vector<int> piece_indices(const ref::SurfaceDesc& d, std::mt19937_64& rng) {
+  std::vector<int> v;
+  const int items = ref::surface_piece_items(d.type);
+  for (int k = 0; k < items; ++k) v.push_back(k);
+  if (rng() % 16 == 0) v.push_back(items < 3 ? items + static_cast<int>(rng() % (3 - items)) : 2);
+  return v;
+}
+
+inline i128 random_bits(std::mt19937_64& rng, int width) {
+  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
+  return static_cast<i128>(width >= 128 ? bits : bits & ((u128{1} << width) - 1));
+}
+
+// The indicator fields of a descriptor redrawn within rpu_indicator's port contract (its type
+// and the setup's fields kept): the spiral's and snail's turn constants over their whole width
+// (the lane offsets saturate: overflow), the rocket's fin and cone constants, the scales and r2
+// of the quadrics; full_turns ≤ turns − 1, so full_turns + last_turn ≤ turns.
+inline i128 random_magnitude(std::mt19937_64& rng, int width) {  // signed, of a random length
+  const int w = 1 + static_cast<int>(rng() % static_cast<unsigned>(width));
+  const i128 u = random_bits(rng, w);
+  return u >= (i128{1} << (w - 1)) ? u - (i128{1} << w) : u;
+}
+inline ref::SurfaceDesc edit_indicator_fields(ref::SurfaceDesc s, const ref::HwParams& p,
+                                              int turns, std::mt19937_64& rng) {
+  const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w();
+  const auto unit_scale = [&] {
+    return static_cast<std::int64_t>(1 + random_bits(rng, kf) % (i128{1} << kf));
+  };
+  const auto scaled = [&] {
+    ref::ScaledConst c;
+    c.m = static_cast<std::int64_t>(random_magnitude(rng, mw));
+    c.s = static_cast<int>(rng() % static_cast<unsigned>(2 * lw + 8));
+    return c;
+  };
+  const i128 r2_max = i128{1} << (2 * lw);
+  switch (s.type) {
+    case scene::SurfaceType::kEllipsoid:
+    case scene::SurfaceType::kReliefEllipsoid:
+      s.sx = unit_scale();
+      s.sy = unit_scale();
+      s.sz = unit_scale();
+      s.r2 = random_bits(rng, 2 * lw + 1) % (r2_max + 1);
+      s.kd = static_cast<std::int64_t>(random_magnitude(rng, kf + 2));
+      s.ke2 = static_cast<std::int64_t>(random_magnitude(rng, kf + 2));
+      s.y_angle = scaled();
+      break;
+    case scene::SurfaceType::kSpiral:
+      s.sx = unit_scale();
+      s.sy = unit_scale();
+      s.r2 = random_bits(rng, 2 * lw + 1) % (r2_max + 1);
+      s.rho0 = static_cast<std::int64_t>(random_magnitude(rng, lw));
+      [[fallthrough]];
+    case scene::SurfaceType::kSnail:
+      s.a_turn = static_cast<std::int64_t>(random_magnitude(rng, lw + 8));
+      s.k_turn = static_cast<std::int64_t>(random_magnitude(rng, lw + 8));
+      s.full_turns = static_cast<int>(rng() % static_cast<unsigned>(turns));
+      break;
+    case scene::SurfaceType::kRocket:
+      s.rocket_a = static_cast<std::int64_t>(random_magnitude(rng, lw));
+      s.rocket_b = static_cast<std::int64_t>(random_magnitude(rng, lw));
+      s.fin = scaled();
+      s.cone = scaled();
+      break;
+  }
+  return s;
+}
+
+// The indicator fields of a SurfaceDesc on rpu_indicator's port names (rpu_surface_ip and
+// rpu_surface_top share them), and junk on them.
+template <class Top>
+void drive_indicator_fields(Top& top, const ref::HwParams& p, const ref::SurfaceDesc& s) {
+  const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w(), tw = lw + 8;
+  top.type_i = static_cast<unsigned>(s.type);
+  top.full_turns_i = static_cast<unsigned>(s.full_turns);
+  put(top.sx_i, s.sx, kf + 1);
+  put(top.sy_i, s.sy, kf + 1);
+  put(top.sz_i, s.sz, kf + 1);
+  put(top.r2_i, s.r2, 2 * lw + 1);
+  put(top.kd_i, s.kd, kf + 2);
+  put(top.ke2_i, s.ke2, kf + 2);
+  put(top.y_angle_m_i, s.y_angle.m, mw);
+  put(top.y_angle_s_i, s.y_angle.s, 8);
+  put(top.rho0_i, s.rho0, lw);
+  put(top.a_turn_i, s.a_turn, tw);
+  put(top.k_turn_i, s.k_turn, tw);
+  put(top.rocket_a_i, s.rocket_a, lw);
+  put(top.rocket_b_i, s.rocket_b, lw);
+  put(top.fin_m_i, s.fin.m, mw);
+  put(top.fin_s_i, s.fin.s, 8);
+  put(top.cone_m_i, s.cone.m, mw);
+  put(top.cone_s_i, s.cone.s, 8);
+}
+template <class Top>
+void drive_indicator_junk(Top& top, const ref::HwParams& p, std::mt19937_64& rng) {
+  const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w(), tw = lw + 8;
+  const auto r = [&](int w) { return random_bits(rng, w); };
+  top.type_i = static_cast<unsigned>(r(3));
+  top.full_turns_i = static_cast<unsigned>(r(4));
+  put(top.sx_i, r(kf + 1), kf + 1);
+  put(top.sy_i, r(kf + 1), kf + 1);
+  put(top.sz_i, r(kf + 1), kf + 1);
+  put(top.r2_i, r(2 * lw + 1), 2 * lw + 1);
+  put(top.kd_i, r(kf + 2), kf + 2);
+  put(top.ke2_i, r(kf + 2), kf + 2);
+  put(top.y_angle_m_i, r(mw), mw);
+  put(top.y_angle_s_i, r(8), 8);
+  put(top.rho0_i, r(lw), lw);
+  put(top.a_turn_i, r(tw), tw);
+  put(top.k_turn_i, r(tw), tw);
+  put(top.rocket_a_i, r(lw), lw);
+  put(top.rocket_b_i, r(lw), lw);
+  put(top.fin_m_i, r(mw), mw);
+  put(top.fin_s_i, r(8), 8);
+  put(top.cone_m_i, r(mw), mw);
+  put(top.cone_s_i, r(8), 8);
+}
+
+// Fields appended LSB first into a port of any width (vectors {z, y, x}, M row-major).
+struct PortBits {
+  std::array<std::uint32_t, 64> w{};
+  int n = 0;
+  void add(i128 v, int width) {
+    const u128 u = static_cast<u128>(v);
+    for (int b = 0; b < width; ++b, ++n) {
+      const bool bit = b < 128 ? ((u >> b) & 1) != 0 : v < 0;
+      if (bit) w[static_cast<size_t>(n / 32)] |= 1u << (n % 32);
+    }
+  }
+  void add3(const ref::IVec3& v, int width) {
+    add(v.x, width);
+    add(v.y, width);
+    add(v.z, width);
+  }
+  template <std::size_t N>
+  void to(VlWide<N>& port) const {
+    for (std::size_t k = 0; k < N; ++k) port[k] = w[k];
+  }
+  template <class T>
+  void to(T& port) const {
+    port = static_cast<T>(w[0] | (static_cast<std::uint64_t>(w[1]) << 32));
+  }
+};
+
+inline std::string str(const ref::WVec3& v) {
+  std::string s("(");
+  s += to_string(v.x);
+  s += ", ";
+  s += to_string(v.y);
+  s += ", ";
+  s += to_string(v.z);
+  s += ")";
+  return s;
+}
+inline std::string str(const ref::IVec3& v) { return str(ref::WVec3{v.x, v.y, v.z}); }
+
+}  // namespace rpu::sim
