@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/parallel.h"
 #include "scene/screen_bins.h"
+#include "tracer/sphere_interval.h"
 #include "tracer/surface_tracer.h"
 
 namespace rpu::tracer {
@@ -32,16 +33,7 @@ void check_ip_parameters(int n, int n1) {
 
 bool interpolation_interval(const Vec3& eye, const Vec3& v, const Segment& s, double& t1,
                             double& t2) {
-  const Vec3 q = s.c0 - eye;
-  const double vq = dot(v, q), vv = dot(v, v);
-  // pred_1 without division: (v·q)² ≥ |v|²·(|q|² - R²).
-  const double disc = vq * vq - vv * (dot(q, q) - s.R * s.R);
-  if (disc < 0.0) return false;
-  const double root = std::sqrt(disc);
-  t2 = (vq + root) / vv;
-  if (!(t2 > 0.0)) return false;  // the sphere is behind the eye
-  t1 = std::max(0.0, (vq - root) / vv);
-  return true;
+  return sphere_interval(eye, v, s.c0, s.R, t1, t2);
 }
 
 PairResult iterative_pair(const CameraFrame& cam, const Segment& s, int i, int j, int n, int n1,

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "tracer/sphere_interval.h"
+
 namespace rpu::tracer {
 
 using scene::AzimuthBranch;
@@ -14,16 +16,7 @@ using scene::SurfaceType;
 
 bool surface_interval(const CompiledSurface& s, const Vec3& o, const Vec3& d, double& t1,
                       double& t2) {
-  const Vec3 q = s.local_centre - o;
-  const double vq = dot(d, q), vv = dot(d, d);
-  if (!(vv > 0.0)) return false;
-  const double disc = vq * vq - vv * (dot(q, q) - s.local_radius * s.local_radius);
-  if (disc < 0.0) return false;
-  const double root = std::sqrt(disc);
-  t2 = (vq + root) / vv;
-  if (!(t2 > 0.0)) return false;  // the sphere is behind the eye
-  t1 = std::max(0.0, (vq - root) / vv);
-  return true;
+  return sphere_interval(o, d, s.local_centre, s.local_radius, t1, t2);
 }
 
 bool iterative_piece(const SurfaceGeometry& g, const AzimuthBranch& branch, const Vec3& A,
