@@ -519,13 +519,10 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
 
   // ref vs float-ip against the documented bound (README; docs/fixed-point.md).
   if (const BackendRender* ref = find("ref"), *ip = find("float-ip"); ref && ip) {
-    const size_t hits = std::max(ref->frame.hit_pixels(), ip->frame.hit_pixels());
-    const size_t differ = metrics["ref_vs_float_ip_mismatched_pixels"].get<size_t>();
-    metrics["ref_vs_float_ip_hit_pixels"] = hits;
-    metrics["ref_vs_float_ip_fraction"] =
-        hits == 0 ? 0.0 : static_cast<double>(differ) / static_cast<double>(hits);
-    metrics["ref_vs_float_ip_beyond_bound"] =
-        static_cast<double>(differ) > kRefVsFloatIpBound * static_cast<double>(hits);
+    const RefVsFloatIp r = ref_vs_float_ip(ref->frame, ip->frame);
+    metrics["ref_vs_float_ip_hit_pixels"] = r.hit_pixels;
+    metrics["ref_vs_float_ip_fraction"] = r.fraction;
+    metrics["ref_vs_float_ip_beyond_bound"] = r.beyond_bound;
   } else {
     metrics["ref_vs_float_ip_hit_pixels"] = nullptr;
     metrics["ref_vs_float_ip_fraction"] = nullptr;
@@ -622,6 +619,17 @@ void check_compare_output(const std::string& out_dir, const std::string& input_f
       throw Error(e.path().string(), "is the scene file being compared; rpu compare would "
                                      "overwrite it (choose another --out)");
   }
+}
+
+RefVsFloatIp ref_vs_float_ip(const image::Frame& ref, const image::Frame& float_ip) {
+  RefVsFloatIp r;
+  r.differing = image::count_differing_pixels(ref, float_ip);
+  r.hit_pixels = std::max(ref.hit_pixels(), float_ip.hit_pixels());
+  r.fraction = r.hit_pixels == 0 ? 0.0
+                                 : static_cast<double>(r.differing) / static_cast<double>(r.hit_pixels);
+  r.beyond_bound =
+      static_cast<double>(r.differing) > kRefVsFloatIpBound * static_cast<double>(r.hit_pixels);
+  return r;
 }
 
 std::string ref_vs_float_ip_warning(const nlohmann::json& metrics) {

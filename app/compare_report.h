@@ -102,6 +102,18 @@ CompareSummary write_compare_report(const CompareInput& in, const std::string& o
 // symlinks count). Throws rpu::Error naming the path.
 void check_compare_output(const std::string& out_dir, const std::string& input_file);
 
+// ref vs float-ip as compare measures it against kRefVsFloatIpBound: the pixels whose primitive
+// differs (image::count_differing_pixels), the hit pixels (the larger of the two hit counts),
+// their fraction (0 without hits) and whether the difference is beyond the bound. The frames
+// must have one size. metrics.json's ref_vs_float_ip_* hold these; fuzz/fuzz_render checks them.
+struct RefVsFloatIp {
+  size_t differing = 0;
+  size_t hit_pixels = 0;
+  double fraction = 0.0;
+  bool beyond_bound = false;
+};
+RefVsFloatIp ref_vs_float_ip(const image::Frame& ref, const image::Frame& float_ip);
+
 // "ref differs from float-ip on N of M hit pixels (P %), beyond the documented bound of 0.1 %"
 // when metrics.ref_vs_float_ip_beyond_bound is true; "" otherwise.
 std::string ref_vs_float_ip_warning(const nlohmann::json& metrics);

@@ -182,7 +182,7 @@ void read_grid(const json& g, const std::string& file, SweepSpec& s) {
   for (const auto& [k, v] : g.items()) {
     const std::string wk = where + "." + k;
     if (std::none_of(std::begin(kSweepParams), std::end(kSweepParams),
-                     [&](const SweepParam& p) { return k == p.key; }))
+                     [&key = k](const SweepParam& p) { return key == p.key; }))
       throw Error(wk, "unknown hardware parameter (n, n1, coord_w, dir_frac, t_frac, unit_frac, "
                       "edge_frac, inv_w, sqrt_w, metric, ip)");
     std::vector<json> values = v.is_array() ? v.get<std::vector<json>>() : std::vector<json>{v};
@@ -273,7 +273,11 @@ std::string dump_json(const json& j, int indent) {
 }
 
 SweepSpec parse_sweep_file(const std::string& path) {
-  const json j = parse_json(read_input_file(path, "sweep file"), path);
+  return parse_sweep_text(read_input_file(path, "sweep file"), path);
+}
+
+SweepSpec parse_sweep_text(const std::string& text, const std::string& path) {
+  const json j = parse_json(text, path);
   SweepSpec s;
   s.path = path;
   if (!j.is_object()) throw Error(path, "must be a JSON object");

@@ -62,6 +62,9 @@ struct SweepSpec {
 
 // Reads (rpu::read_input_file, "sweep file") and checks the sweep file. Reads no scene.
 SweepSpec parse_sweep_file(const std::string& path);
+// The same on the file's contents already read (`path` names it in messages and is the base of
+// relative scene files); fuzz/fuzz_sweep calls it.
+SweepSpec parse_sweep_text(const std::string& text, const std::string& path);
 
 // The scenes' contents: each file read with rpu::read_input_file ("scene file"), a built-in's
 // embedded text; then parsed, so a bad scene is refused before any configuration runs.

@@ -7,8 +7,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libopenimageio-dev openimageio-tools
-  verilator libsystemc-dev yosys
-  parallel
+  verilator libsystemc-dev yosys z3 clang libclang-rt-14-dev
+  parallel python3
 )
 missing=()
 for p in "${packages[@]}"; do

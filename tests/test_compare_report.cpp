@@ -479,6 +479,34 @@ TEST(CompareReport, RefVsFloatIpBeyondTheBoundIsFlagged) {
   EXPECT_EQ(read_text(dir2 / "report.html").find("banner warn"), std::string::npos);
 }
 
+// The measure itself (compare and fuzz/fuzz_render share it): the larger hit count, the
+// fraction, and the bound exclusive at exactly 0.1 %.
+TEST(CompareReport, RefVsFloatIpMeasure) {
+  const CompareInput in = full_input();  // renders: float, float-ip, ref, rtl
+  const RefVsFloatIp r = ref_vs_float_ip(in.renders[2].frame, in.renders[1].frame);
+  EXPECT_EQ(r.differing, 3u);
+  EXPECT_EQ(r.hit_pixels, 18u);
+  EXPECT_DOUBLE_EQ(r.fraction, 3.0 / 18.0);
+  EXPECT_TRUE(r.beyond_bound);
+
+  image::Frame a(50, 40), b(50, 40);  // 2000 hits each
+  std::fill(a.primitive.begin(), a.primitive.end(), 0);
+  b.primitive = a.primitive;
+  EXPECT_FALSE(ref_vs_float_ip(a, b).beyond_bound);
+  b.primitive[7] = 1;
+  b.primitive[9] = 1;  // 2 of 2000: exactly the bound, not beyond it
+  EXPECT_FALSE(ref_vs_float_ip(a, b).beyond_bound);
+  b.primitive[11] = image::kBackground;  // 3 of 2000
+  EXPECT_TRUE(ref_vs_float_ip(a, b).beyond_bound);
+  EXPECT_EQ(ref_vs_float_ip(a, b).hit_pixels, 2000u);
+
+  const image::Frame empty(4, 4);
+  const RefVsFloatIp none = ref_vs_float_ip(empty, empty);
+  EXPECT_EQ(none.hit_pixels, 0u);
+  EXPECT_EQ(none.fraction, 0.0);
+  EXPECT_FALSE(none.beyond_bound);
+}
+
 // Scene names are any bytes (file names need not be UTF-8): written, not an exception.
 TEST(CompareReport, NonUtf8SceneNameIsWritten) {
   CompareInput in = full_input();

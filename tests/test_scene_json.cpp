@@ -764,6 +764,30 @@ TEST(SceneJson, SyntaxErrorReportsLineAndColumn) {
   }
 }
 
+// Fuzz finding (fuzz/regressions/fuzz_scene/key_with_newline.json): a JSON key may hold escaped
+// control characters; the message naming it stays one line, the characters written as escapes.
+TEST(SceneJson, ControlCharactersInKeysKeepTheMessageOneLine) {
+  for (const auto& [key, shown] : {std::pair<std::string, std::string>{R"(camerl\\\nula)", R"(camerl\\nula)"},
+                                   {R"(a\tb\u0001\u001f\u007f)", R"(a\tb\x01\x1f\x7f)"}}) {
+    try {
+      parse_scene(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
+                                 "width": 8, "height": 8}, ")" + key + R"(": 1})",
+                  kSource);
+      ADD_FAILURE() << "accepted key " << key;
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find_first_of("\n\r\t\x01\x1f\x7f"), std::string::npos) << what;
+      EXPECT_EQ(e.where(), std::string(kSource) + ": " + shown) << what;
+      EXPECT_NE(e.problem().find("unknown key '" + shown + "'"), std::string::npos) << what;
+    }
+  }
+  // Error itself: where and problem each escaped, what() joins them.
+  const Error e("a\nb.json", "bad\rvalue\x02");
+  EXPECT_EQ(e.where(), "a\\nb.json");
+  EXPECT_EQ(e.problem(), "bad\\rvalue\\x02");
+  EXPECT_STREQ(e.what(), "a\\nb.json: bad\\rvalue\\x02");
+}
+
 // Degenerate geometry is named for what it is: points a subnormal distance apart are "too short
 // to compute with", not "repeated"; directions with subnormal components are directions.
 TEST(SceneJson, TinyValuesGetTruthfulMessages) {
