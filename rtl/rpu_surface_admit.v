@@ -38,6 +38,55 @@ module rpu_surface_admit #(
     if (!rst_ni) due_q <= {(Period*CntW){1'b0}};
     else         due_q <= {next, due_q[Period*CntW-1:CntW]};
   end
+
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.sh, docs/verification.md) ----
+  // Reset at the first cycle (when this module is the proof's top), valid_i free. Each phase
+  // counter stays within Returns; an arbitrary admitted item (f_pick) is followed: at every
+  // j·Period cycles after its admission (j = 1 .. Returns), when it comes back to the ring's
+  // input, its counter is the head and holds Returns − j + 1, so ready_o is low and nothing
+  // else is admitted into its slot; after its last return the slot is free again.
+  reg f_past_valid = 1'b0;
+  always @(posedge clk_i) f_past_valid <= 1'b1;
+`ifdef RPU_FORMAL_ADMIT
+  always @(*) if (!f_past_valid) assume(!rst_ni);
+`endif
+  localparam integer FEnd = (Returns + 1) * Period;  // age at which the item's slot is free
+  wire accept = valid_i && ready_o;
+  (* anyseq *) wire f_pick;
+  reg        f_track;
+  reg [15:0] f_age;  // cycles since the tracked item's admission, saturating at FEnd + 1
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_track <= 1'b0;
+    else if (accept && f_pick && !f_track) begin
+      f_track <= 1'b1;
+      f_age   <= 16'd1;  // the cycle after the admission
+    end else if (f_track && f_age <= FEnd[15:0]) f_age <= f_age + 16'd1;
+  end
+  // Where and what the tracked item's counter is at age a ≥ 1: slot (Period − a mod Period)
+  // mod Period, value Returns − ⌊(a − 1)/Period⌋.
+  wire [15:0]     f_slot  = (Period[15:0] - (f_age % Period[15:0])) % Period[15:0];
+  wire [15:0]     f_left  = Returns[15:0] - (f_age - 16'd1) / Period[15:0];
+  wire [CntW-1:0] f_cnt   = due_q[f_slot * CntW +: CntW];
+  integer f_p;
+  always @(*) begin
+    if (rst_ni) begin
+      for (f_p = 0; f_p < Period; f_p = f_p + 1)
+        assert(due_q[f_p * CntW +: CntW] <= Full);
+      if (f_track && f_age != 16'd0 && f_age <= Returns[15:0] * Period[15:0])
+        assert({{(16 - CntW){1'b0}}, f_cnt} == f_left);
+      if (f_track && f_age != 16'd0 && f_age % Period[15:0] == 16'd0) begin
+        if (f_age <= Returns[15:0] * Period[15:0]) assert(!ready_o);  // it returns now
+        else if (f_age == FEnd[15:0]) assert(head == {CntW{1'b0}});   // its slot is free
+      end
+    end
+  end
+  // Reachability: an item refused for a returning one, the tracked item through all returns.
+  always @(*) if (rst_ni) begin
+    cover(valid_i && !ready_o);
+    cover(f_track && f_age == FEnd[15:0] && accept);
+  end
+`endif
 endmodule
 
 `default_nettype wire

@@ -357,6 +357,91 @@ module rpu_top #(
     .depth_o(pix_depth_o), .primitive_o(pix_prim_o));
   assign pix_j_o = pix_ji[2*IdxW-1 -: IdxW];
   assign pix_i_o = pix_ji[IdxW-1:0];
+
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.sh at a reduced parameter set, docs/verification.md)
+  // Only control and tag signals are referenced: the script removes the datapath outputs from
+  // the ports, so no multiplier or divider stays in the proof. Environment: reset at the first
+  // cycle; the work items are numbered 0, 1, 2, … (mod 2^IdW) in item_id_i; every other input
+  // is free (any valid/ready pattern, any segment, descriptor writes at any time).
+  reg f_past_valid = 1'b0;
+  always @(posedge clk_i) f_past_valid <= 1'b1;
+  always @(*) if (!f_past_valid) assume(!rst_ni);
+  reg [IdW-1:0]     f_acc_id, f_pop_id;   // items accepted / results delivered, mod 2^IdW
+  reg [FifoLog2+1:0] f_out;               // accepted − delivered (exact)
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      f_acc_id <= {IdW{1'b0}};
+      f_pop_id <= {IdW{1'b0}};
+      f_out    <= {(FifoLog2+2){1'b0}};
+    end else begin
+      if (accept) f_acc_id <= f_acc_id + 1'b1;
+      if (pop)    f_pop_id <= f_pop_id + 1'b1;
+      f_out <= f_out + {{(FifoLog2+1){1'b0}}, accept} - {{(FifoLog2+1){1'b0}}, pop};
+    end
+  end
+  always @(*) if (item_valid_i) assume(item_id_i == f_acc_id);
+  always @(*) begin
+    if (!rst_ni) assert(!res_valid_o && !pix_valid_o);
+    if (rst_ni) begin
+      // The credit count is the number of items accepted and not delivered, never above 2^FifoLog2.
+      assert(used_q <= Depth[FifoLog2:0]);
+      assert({1'b0, used_q} == f_out);
+      // item_ready_o: exactly while a credit is free.
+      assert(item_ready_o == (f_out < Depth));
+      // No result without an accepted item; results in input order, each exactly once (the
+      // result's id is the number of results delivered before it).
+      if (res_valid_o) begin
+        assert(f_out != {(FifoLog2+2){1'b0}});
+        assert(res_id_o == f_pop_id);
+      end
+    end
+  end
+  // Tracked item: f_pick (free) chooses one accepted item; its pixel, segment and last bit must
+  // come back with its id.
+  (* anyseq *) wire f_pick;
+  reg                f_track, f_done;
+  reg [IdW-1:0]      f_t_id;
+  reg [2*IdxW+SegAddrW:0] f_t_tag;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      f_track <= 1'b0;
+      f_done  <= 1'b0;
+    end else if (accept && f_pick && !f_track && !f_done) begin
+      f_track <= 1'b1;
+      f_t_id  <= item_id_i;
+      f_t_tag <= {item_last_i, item_i_i, item_j_i, item_seg_i};
+    end else if (f_track && pop && res_id_o == f_t_id) begin
+      f_track <= 1'b0;
+      f_done  <= 1'b1;
+    end
+  end
+  always @(*) if (rst_ni && f_track && res_valid_o && res_id_o == f_t_id)
+    assert({res_last_o, res_i_o, res_j_o, res_seg_o} == f_t_tag);
+  always @(posedge clk_i) begin
+    if (f_past_valid && $past(rst_ni) && rst_ni) begin
+      // AXI-Stream: a result, or a pixel, stays valid with the same tags until taken.
+      if ($past(res_valid_o && !res_ready_i)) begin
+        assert(res_valid_o);
+        assert(res_id_o == $past(res_id_o) && res_last_o == $past(res_last_o) &&
+               res_i_o == $past(res_i_o) && res_j_o == $past(res_j_o) &&
+               res_seg_o == $past(res_seg_o) && res_tex_o == $past(res_tex_o));
+      end
+      if ($past(pix_valid_o && !pix_ready_i)) begin
+        assert(pix_valid_o);
+        assert(pix_i_o == $past(pix_i_o) && pix_j_o == $past(pix_j_o));
+      end
+    end
+  end
+  // Reachability: a curve and a texture result out, the credits exhausted, a pixel out.
+  always @(*) if (rst_ni) begin
+    cover(res_valid_o && !res_tex_o);
+    cover(res_valid_o && res_tex_o);
+    cover(!item_ready_o);
+    cover(pix_valid_o);
+    cover(f_done);
+  end
+`endif
 endmodule
 
 `default_nettype wire

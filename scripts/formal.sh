@@ -1,0 +1,201 @@
+#!/usr/bin/env bash
+# Formal checks of the stream and control properties written in the RTL under `ifdef FORMAL
+# (docs/verification.md): Yosys (read_verilog -formal, write_smt2) + yosys-smtbmc, no SymbiYosys.
+# For each target: bounded model check (BMC) to the target's depth, k-induction where it closes,
+# and cover analysis (every cover statement must be reachable: the assumptions are not vacuous).
+# The fifo_bug_* targets are mutated copies of rpu_fifo that must FAIL (a counterexample).
+# A failing property makes the script exit 1 and print the trace (VCD) file.
+#
+# Usage: scripts/formal.sh [--smoke] [--out DIR] [--solver z3] [target ...]
+#   targets: fifo resolve admit top fifo_bug_full fifo_bug_stale (default: all)
+#   --smoke  the default-CI subset: rpu_top only to a short BMC depth (the full depth covers
+#            the reduced pipeline's latency and takes several minutes)
+#   --out    output directory (default build/formal): <target>/{model.ys,yosys.log,*.log,*.vcd}
+# Solver: z3 through smtbmc's --unroll (z3 4.8.12 stalls on the uninterpreted-state encoding;
+# Debian's boolector 1.5 cannot read smtbmc's SMT-LIB2).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+rtl=$root/rtl
+
+smoke=0
+out=build/formal
+solver=z3
+targets=()
+while (($#)); do
+  case "$1" in
+    --smoke) smoke=1 ;;
+    --out) out=$2; shift ;;
+    --solver) solver=$2; shift ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "formal.sh: $1: unknown option" >&2; exit 2 ;;
+    *) targets+=("$1") ;;
+  esac
+  shift
+done
+((${#targets[@]})) || targets=(fifo resolve admit top fifo_bug_full fifo_bug_stale)
+for t in yosys yosys-smtbmc "$solver"; do
+  command -v "$t" >/dev/null || { echo "formal.sh: $t: not found (scripts/setup.sh)" >&2; exit 2; }
+done
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+# rpu_top's hierarchy.
+top_files="rpu_top rpu_ray_gen rpu_sphere rpu_ip rpu_ip_step rpu_candidate rpu_capture
+  rpu_ray_plane rpu_texture rpu_fifo rpu_resolve rpu_mul rpu_sqrt rpu_div rpu_chord
+  rpu_guide_pair rpu_curve_point"
+# The reduced rpu_top: smallest widths, SqrtW 16 and the squared metric (shorter roots),
+# N = N1 = 1 (one IP step), 4 credits, 2-bit ids (ids stay distinct among <= 4 outstanding).
+top_params="CoordW=12 DirFrac=8 TFrac=8 UnitFrac=8 EdgeFrac=8 InvW=8 SqrtW=16 N=1 N1=1
+  Metric=1 Unrolled=1 SegAddrW=1 IdxW=1 IdW=2 PrimW=1 FifoLog2=2"
+# Datapath outputs: removed from the ports so that their logic leaves the model.
+top_cut="res_pred1_o res_hit_o res_depth_o res_tau_o res_t_o res_x_o res_ovf_o res_prim_o
+  pix_hit_o pix_depth_o pix_prim_o"
+
+# target -> "module|files|defines|params|bmc depth|induction depth (0: none)|cover depth|expect"
+# Depths: rpu_top's curve result is first reachable at step 136 (cover; accepted at step 1), so 145
+# covers the latency with all four credits in flight; --smoke checks its first 16 cycles.
+top_bmc=145; top_cover=145
+((smoke)) && { top_bmc=16; top_cover=0; }
+declare -A spec=(
+  [fifo]="rpu_fifo|rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|8|12|pass"
+  [resolve]="rpu_resolve|rpu_resolve|RPU_FORMAL_RESOLVE|PixW=2 DepthW=3 PrimW=2|24|8|12|pass"
+  [admit]="rpu_surface_admit|rpu_surface_admit|RPU_FORMAL_ADMIT|Period=3 Returns=2|24|8|16|pass"
+  [top]="rpu_top|$(echo $top_files)||$(echo $top_params)|$top_bmc|0|$top_cover|pass"
+  [fifo_bug_full]="rpu_fifo|rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
+  [fifo_bug_stale]="rpu_fifo|rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
+)
+
+# Deliberate faults (sed expressions on a copy of rtl/rpu_fifo.v):
+#   fifo_bug_full:  wr_ready_o always 1: a write while full overwrites the oldest entry.
+#   fifo_bug_stale: the output register loads only when taken, not when empty: an entry
+#                   arriving at an empty FIFO is announced with the previous entry's data.
+declare -A mutation=(
+  [fifo_bug_full]="s/assign wr_ready_o = fill != Depth\[Log2Depth:0\];/assign wr_ready_o = 1'b1;/"
+  [fifo_bug_stale]="s/    if (load)  out_q <= mem_q/    if (take)  out_q <= mem_q/"
+)
+
+status=0
+summary=()
+now() { date +%s.%N; }
+secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
+
+# run_smtbmc DIR NAME ARGS...: 0 passed, 1 failed (assert / unreachable cover), 2 error.
+run_smtbmc() {
+  local dir=$1 name=$2; shift 2
+  local rc=0
+  yosys-smtbmc -s "$solver" --unroll "$@" --dump-vcd "$dir/$name.vcd" "$dir/model.smt2" \
+    > "$dir/$name.log" 2>&1 || rc=$?
+  if grep -q "Status: PASSED" "$dir/$name.log"; then return 0; fi
+  if grep -q "Status: FAILED" "$dir/$name.log"; then return 1; fi
+  return 2
+}
+
+for t in "${targets[@]}"; do
+  [ -n "${spec[$t]+x}" ] || { echo "formal.sh: $t: unknown target" >&2; exit 2; }
+  IFS='|' read -r mod files defs params bmc ind cov expect <<< "${spec[$t]}"
+  dir=$out/$t
+  rm -rf "$dir"; mkdir -p "$dir"
+  srcs=()
+  for f in $files; do
+    if [ -n "${mutation[$t]+x}" ] && [ "$f" = rpu_fifo ]; then
+      sed "${mutation[$t]}" "$rtl/$f.v" > "$dir/$f.v"
+      cmp -s "$rtl/$f.v" "$dir/$f.v" && { echo "formal.sh: $t: mutation did not apply" >&2; exit 2; }
+      srcs+=("$dir/$f.v")
+    else
+      srcs+=("$rtl/$f.v")
+    fi
+  done
+  defines="-D FORMAL"
+  for d in $defs; do defines+=" -D $d"; done
+  chparam=""
+  for p in $params; do chparam+=" -set ${p%%=*} ${p#*=}"; done
+  {
+    echo "read_verilog -formal -sv $defines -I $rtl ${srcs[*]}"
+    echo "chparam$chparam $mod"
+    echo "hierarchy -check -top $mod"
+    echo "proc"
+    echo "flatten"
+    if [ "$mod" = rpu_top ]; then
+      # Prune the datapath: drop its outputs from the ports, map the FIFO memories to
+      # flip-flops and bit-blast the registers and muxes, so that unobserved bits (and with
+      # them every multiplier, divider and root) have no reader left.
+      cut=""; for o in $top_cut; do cut+=" o:$o"; done
+      echo "delete -output$cut"
+    fi
+    echo "memory_map"
+    echo "opt_clean"
+    echo "async2sync"
+    echo "dffunmap"
+    if [ "$mod" = rpu_top ]; then
+      echo 'simplemap t:$dff t:$mux t:$pmux t:$and t:$or t:$xor t:$xnor t:$not t:$logic_* t:$reduce_* t:$pos t:$eq t:$ne'
+      echo "opt_clean"
+      echo "opt -fast -keepdc"
+      echo "dffunmap"
+      echo "opt_clean"
+    fi
+    echo "tee -o $dir/stat.txt stat"
+    echo "write_smt2 -wires $dir/model.smt2"
+  } > "$dir/model.ys"
+  t0=$(now)
+  if ! yosys -q -l "$dir/yosys.log" "$dir/model.ys" > /dev/null 2>&1; then
+    echo "FAIL $t: yosys (see $dir/yosys.log)"; grep -i error "$dir/yosys.log" | head -5
+    status=1; summary+=("$t: yosys error"); continue
+  fi
+  t1=$(now)
+  cells=$(awk '/Number of cells:/ { n = $4 } END { print n }' "$dir/stat.txt")
+  ffs=$(awk '/\$_DFF_|\$dff / { n += $2 } END { print n + 0 }' "$dir/stat.txt")
+  result=""
+  ok=1
+  # BMC.
+  rc=0; run_smtbmc "$dir" bmc -t "$bmc" || rc=$?
+  t2=$(now)
+  if [ "$expect" = fail ]; then
+    if ((rc == 1)) && grep -q "Assert failed" "$dir/bmc.log"; then
+      result="counterexample as expected ($(grep -m1 'Assert failed' "$dir/bmc.log" | sed 's/.*Assert failed in //'); trace $dir/bmc.vcd)"
+    else
+      ok=0; result="NO counterexample for an injected fault (bmc rc $rc): $dir/bmc.log"
+    fi
+  else
+    case $rc in
+      0) result="BMC $bmc steps passed ($(secs "$t1" "$t2") s)" ;;
+      1) ok=0; result="BMC FAILED: $(grep -m1 'Assert failed' "$dir/bmc.log" | sed 's/.*Assert failed in //'); trace $dir/bmc.vcd" ;;
+      *) ok=0; result="BMC error: $dir/bmc.log" ;;
+    esac
+    # k-induction.
+    if ((ok && ind > 0)); then
+      t3=$(now); rc=0; run_smtbmc "$dir" induction -i -t "$ind" || rc=$?; t4=$(now)
+      if ((rc == 0)); then
+        # The smallest k that closes, for the report.
+        k=1
+        while ((k < ind)); do
+          yosys-smtbmc -s "$solver" --unroll -i -t "$k" "$dir/model.smt2" 2>&1 |
+            grep -q "Status: PASSED" && break
+          k=$((k + 1))
+        done
+        result+="; induction closed at k = $k ($(secs "$t3" "$t4") s)"
+      else
+        ok=0; result+="; induction FAILED within $ind: $(grep -m1 'Assert failed' "$dir/induction.log" | sed 's/.*Assert failed in //'); trace $dir/induction.vcd"
+      fi
+    fi
+    # Covers: every cover statement reachable.
+    if ((ok && cov > 0)); then
+      t5=$(now); rc=0; run_smtbmc "$dir" cover -c -t "$cov" || rc=$?; t6=$(now)
+      steps=$(grep -o "Reached cover statement.* in step [0-9]*" "$dir/cover.log" |
+              sed 's/.*in step //' | sort -n | tr '\n' ' ')
+      if ((rc == 0)); then
+        result+="; all covers reached (steps ${steps% }; $(secs "$t5" "$t6") s)"
+      else
+        ok=0; result+="; COVER FAILED (unreached or assert): $dir/cover.log"
+      fi
+    fi
+  fi
+  total=$(secs "$t0" "$(now)")
+  if ((ok)); then
+    echo "ok   $t [$mod, $cells cells, $ffs FF cells]: $result; total $total s"
+  else
+    echo "FAIL $t [$mod]: $result"
+    status=1
+  fi
+done
+exit $status
