@@ -24,7 +24,8 @@ struct BackendOptions {
   ref::RefOptions ref;              // threads, binning, grid of the model (and the RTL schedule)
   patch::PatchRenderOptions patch;  // float, float-ip: method, map of the patches (ALGORITHM 4)
   bool systemc = false;             // rtl: the SystemC harness instead of the C++ one
-  bool fault = false;               // rtl: the fault-injected build (checker tests)
+  int fault = 0;                    // rtl: the fault-injected build's fault (checker tests;
+                                    // sim::RtlOptions::fault)
   std::optional<std::pair<int, int>> trace_pixel;  // rtl: re-run a pixel with a waveform
   std::string trace_path = "trace.fst";
 };

@@ -32,6 +32,14 @@ namespace {
 
 using namespace rpu;
 
+// --rtl-fault's value → sim::RtlOptions::fault (0: the flag is absent).
+int rtl_fault_code(const std::string& name) {
+  if (name.empty()) return 0;
+  if (name == "argmin-tie") return 1;
+  if (name == "far-hit") return 2;
+  throw Error("--rtl-fault", "unknown fault '" + name + "' (argmin-tie, far-hit)");
+}
+
 // Hardware parameters and render switches shared by every subcommand.
 struct CommonFlags {
   ref::HwParams hw;
@@ -45,7 +53,7 @@ struct CommonFlags {
   bool systemc = false;
   std::string trace_pixel;   // X,Y
   std::string trace_out = "trace.fst";
-  bool rtl_fault = false;
+  std::string rtl_fault;
   std::string patch_method = "thesis";  // ALGORITHM 4: thesis | martin | newton
   std::string patch_map_size;           // WxH of the preliminary map ("" = the image's)
   bool patch_map_full = false;          // full-precision map parameters instead of 8 bits
@@ -106,8 +114,10 @@ struct CommonFlags {
     app.add_option("--patch-iterations", patch_iterations,
                    "patches: iteration budget of the thesis refiners (steps or directions)")
         ->capture_default_str();
-    app.add_flag("--rtl-fault", rtl_fault,
-                 "rtl: use the build with a deliberately injected fault (tests of the checker)");
+    app.add_flag("--rtl-fault{argmin-tie}", rtl_fault,
+                 "rtl: use the build with a deliberately injected fault (tests of the checker): "
+                 "argmin-tie (the IP's argmin keeps the last minimum: work-item fields) or, as "
+                 "--rtl-fault=far-hit, the resolve keeps the farther hit (pixels)");
   }
   // Refuses out-of-range flags shared by every subcommand (common/limits.h).
   void validate() const {
@@ -169,7 +179,7 @@ struct CommonFlags {
     o.ref = ref_options();
     o.patch = patch_options();
     o.systemc = systemc;
-    o.fault = rtl_fault;
+    o.fault = rtl_fault_code(rtl_fault);
     o.trace_path = trace_out;
     if (!trace_pixel.empty()) {
       int x = -1, y = -1;

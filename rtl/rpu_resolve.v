@@ -58,7 +58,18 @@ module rpu_resolve #(
   // a smaller id).
   wire signed [DepthW-1:0] d_new = depth_i;
   wire signed [DepthW-1:0] d_old = depth_q;
-  wire take = hit_i && (!any_q || (d_new < d_old) || (d_new == d_old && primitive_i < prim_q));
+`ifdef RPU_FAULT
+  // Deliberate fault for the co-simulation checker's own tests (the fault-injected build only,
+  // fault 2 selected at run time, see rpu_ip_step): the farther hit wins, so pixels change while
+  // every work item stays right.
+  import "DPI-C" function int rpu_fault();
+  integer fault_sel;
+  initial fault_sel = rpu_fault();
+  wire nearer = fault_sel == 2 ? d_new > d_old : d_new < d_old;
+`else
+  wire nearer = d_new < d_old;
+`endif
+  wire take = hit_i && (!any_q || nearer || (d_new == d_old && primitive_i < prim_q));
 
   wire              best_any   = any_q || hit_i;
   wire [DepthW-1:0] best_depth = take ? depth_i : (any_q ? depth_q : {DepthW{1'b0}});
@@ -118,6 +129,93 @@ module rpu_resolve #(
   assign any_hit_o   = out_q[DepthW + PrimW];
   assign depth_o     = out_q[PrimW +: DepthW];
   assign primitive_o = out_q[0 +: PrimW];
+
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.sh, docs/verification.md) ----
+  // Standalone (RPU_FORMAL_RESOLVE: this module is the proof's top) the reset is assumed at the
+  // first cycle, every input is free, and an arbitrary pixel result is tracked through the skid
+  // register. As rpu_top's submodule only the control properties are asserted (no datapath bit
+  // enters that proof).
+  reg f_past_valid = 1'b0;
+  always @(posedge clk_i) f_past_valid <= 1'b1;
+`ifdef RPU_FORMAL_RESOLVE
+  always @(*) if (!f_past_valid) assume(!rst_ni);
+`endif
+  // Pixel results owed: +1 per accepted last item, −1 per result taken at the output.
+  reg  [1:0] f_owed;
+  wire       f_out_take = valid_o && ready_i;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_owed <= 2'd0;
+    else         f_owed <= f_owed + {1'b0, push} - {1'b0, f_out_take};
+  end
+  always @(*) begin
+    if (!rst_ni) assert(!valid_o);
+    if (rst_ni) begin
+      // One pixel out per last item in: the results owed are exactly those held.
+      assert(f_owed == {1'b0, out_valid_q} + {1'b0, spill_valid_q});
+      assert(f_owed <= 2'd2);
+      // The spill slot only holds a result behind the output register's.
+      assert(!spill_valid_q || out_valid_q);
+    end
+  end
+  always @(posedge clk_i) begin
+    if (f_past_valid && $past(rst_ni) && rst_ni && $past(valid_o && !ready_i)) begin
+      // AXI-Stream output: valid stays high, the result stable, until taken.
+      assert(valid_o);
+      assert(pixel_o == $past(pixel_o));
+`ifdef RPU_FORMAL_RESOLVE
+      assert(any_hit_o == $past(any_hit_o));
+      assert(depth_o == $past(depth_o));
+      assert(primitive_o == $past(primitive_o));
+`endif
+    end
+  end
+`ifdef RPU_FORMAL_RESOLVE
+  // Tracked result: f_pick (free) chooses one pushed result; f_ahead counts the results in front
+  // of it (0 or 1). It must reach the output unchanged, in order, and leave exactly once.
+  (* anyseq *) wire f_pick;
+  reg            f_track, f_done, f_ahead;
+  reg [ResW-1:0] f_res;
+  wire [ResW-1:0] f_out = {pixel_o, any_hit_o, depth_o, primitive_o};
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      f_track <= 1'b0;
+      f_done  <= 1'b0;
+    end else if (push && f_pick && !f_track && !f_done) begin
+      f_track <= 1'b1;
+      f_res   <= result;
+      // In front: the results held, less the one taken this cycle.
+      f_ahead <= (out_valid_q && !f_out_take) || spill_valid_q;
+    end else if (f_track && f_out_take) begin
+      if (!f_ahead) begin
+        f_track <= 1'b0;
+        f_done  <= 1'b1;
+      end
+      f_ahead <= 1'b0;
+    end
+  end
+  always @(*) if (rst_ni) begin
+    if (f_track) begin
+      assert({1'b0, f_ahead} < f_owed);
+      if (!f_ahead) assert(out_valid_q && f_out == f_res);
+      else          assert(spill_valid_q && spill_q == f_res);
+    end
+    assert(!(f_track && f_done));
+    // A pixel with no hit leaves all zero (the spill slot's condition is its invariant).
+    if (valid_o && !any_hit_o) assert(depth_o == {DepthW{1'b0}} && primitive_o == {PrimW{1'b0}});
+    if (spill_valid_q && !spill_q[DepthW + PrimW])
+      assert(spill_q[DepthW + PrimW - 1:0] == {(DepthW + PrimW){1'b0}});
+  end
+  // Reachability: the spill slot in use (ready_o low), the tracked result out from the spill
+  // slot, a pixel with a hit out.
+  always @(*) if (rst_ni) begin
+    cover(spill_valid_q && !ready_i);
+    cover(f_done && !f_track && f_owed == 2'd0);
+    cover(f_track && f_ahead && spill_valid_q);
+    cover(valid_o && any_hit_o);
+  end
+`endif
+`endif
 endmodule
 
 `default_nettype wire

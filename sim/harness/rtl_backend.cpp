@@ -17,6 +17,14 @@
 
 extern char** environ;
 
+namespace {
+// The fault the fault-injected build's RTL reads at time zero (RtlOptions::fault).
+int g_rtl_fault = 0;
+}  // namespace
+
+// DPI import of rtl/rpu_ip_step.v and rtl/rpu_resolve.v in the RPU_FAULT build.
+extern "C" int rpu_fault() { return g_rtl_fault; }
+
 namespace rpu::sim {
 
 namespace {
@@ -107,7 +115,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
   RtlRender out;
   const RtlConfig* cfg = nullptr;
   for (const RtlConfig& c : rtl_configs())
-    if (c.fault == o.fault && c.params == m.params) cfg = &c;
+    if (c.fault == (o.fault != 0) && c.params == m.params) cfg = &c;
   if (o.systemc || !o.external_exe.empty()) {
     out.harness = o.systemc ? "systemc" : "c++ (external)";
     StreamRecord r;
@@ -125,7 +133,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     if (!cfg) {
       std::string names;
       for (const RtlConfig& c : rtl_configs())
-        if (c.fault == o.fault) names += (names.empty() ? "" : ", ") + c.name;
+        if (c.fault == (o.fault != 0)) names += (names.empty() ? "" : ", ") + c.name;
       throw Error("--backend rtl", fmt::format("no Verilated rpu_top{} for {} (this build has: "
                                                "{}; `rpu config` lists their parameters, "
                                                "sim/harness/CMakeLists.txt adds others)",
@@ -134,6 +142,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     }
     out.harness = "c++";
     out.config = cfg->name;
+    g_rtl_fault = o.fault;  // read by the RTL when the model is built
     auto top = cfg->make(o.x_seed);
     out.stats = cosim_frame(*top, f, sb, o.cosim);
   }

@@ -71,6 +71,14 @@ add_test(NAME rtl_fault_is_caught COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:r
          -DEXPECT_RC=2
          "-DEXPECT_ERR=MISMATCH: pixel \\([0-9]+,[0-9]+\\) work item [0-9]+;model stages:;IP step 1: sums;FAIL: report"
          "-DFILES=${RPU_CMP_OUT}/fault/report.html" -P ${RPU_RUN})
+# A fault that changes the image and no work item: the resolve keeps the farther hit
+# (--rtl-fault=far-hit). The image differs from the model's, the pixel is named, exit status 2.
+add_test(NAME rtl_fault_pixel_is_caught COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;builtin:curve12;--size;48x48;--n;8;--n1;1;--ip;iterative;--rtl-fault=far-hit;--out;${RPU_CMP_OUT}/fault_pixel"
+         -DEXPECT_RC=2
+         "-DEXPECT_ERR=rtl vs ref [1-9][0-9]* px;MISMATCH: pixel \\([0-9]+,[0-9]+\\) resolve\n  expected pixel [^\n]* depth [0-9]+ primitive [0-9]+\n  actual ;FAIL: report"
+         "-DNOT_ERR=work item" -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_fault_pixel_is_caught)
 # --trace-pixel writes a waveform of that pixel's work items.
 add_test(NAME rtl_trace_pixel COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
          "-DARGS=render;builtin:curve12;--size;32x32;--backend;rtl;--trace-pixel;16,9;--trace-out;${RPU_CMP_OUT}/p16_9.fst;-o;${RPU_CMP_OUT}/trace.png"
@@ -88,7 +96,8 @@ foreach(bad "no_config|--size~16x16~--n~10~--n1~2|no Verilated rpu_top for n 10"
             "trace_syntax|--size~16x16~--trace-pixel~3-4|--trace-pixel: must be X,Y"
             "trace_range|--size~16x16~--trace-pixel~500,2|outside the 16x16 image"
             "systemc_unrolled|--size~16x16~--systemc|--systemc: the SystemC model is built"
-            "size_syntax|--size~16by16|--size: must be WxH")
+            "size_syntax|--size~16by16|--size: must be WxH"
+            "fault_name|--size~16x16~--rtl-fault=bogus|--rtl-fault: unknown fault 'bogus' \\(argmin-tie, far-hit\\)")
   string(REPLACE "|" ";" parts "${bad}")
   list(GET parts 0 name)
   list(GET parts 1 flags)
