@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -24,6 +25,20 @@ inline std::uint64_t test_seed(const char* name, std::uint64_t fallback = 202611
   std::printf("%s: seed %llu (set RPU_SEED to reproduce another)\n", name,
               static_cast<unsigned long long>(seed));
   return seed;
+}
+
+// A Verilated context whose registers all start random (every model is built --x-initial
+// unique): a register the reset forgets, or a reset that never comes, shows as a mismatch
+// instead of hiding behind all-zero power-up values. RPU_X_SEED picks the values (printed).
+inline std::unique_ptr<VerilatedContext> make_context(const char* name) {
+  const char* env = std::getenv("RPU_X_SEED");
+  const std::uint64_t seed = env ? std::strtoull(env, nullptr, 0) : 20261122;
+  std::printf("%s: initial register values from x-seed %llu (set RPU_X_SEED for others)\n", name,
+              static_cast<unsigned long long>(seed));
+  auto ctx = std::make_unique<VerilatedContext>();
+  ctx->randReset(2);
+  ctx->randSeed(static_cast<int>(seed & 0x7fffffff));
+  return ctx;
 }
 
 // Vector count: RPU_VECTORS from the environment scales the default (opt-in long runs).

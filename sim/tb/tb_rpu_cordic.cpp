@@ -69,7 +69,7 @@ std::int64_t random_in_range(std::mt19937_64& rng) {  // random magnitude, |v| â
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_cordic");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_cordic>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_cordic");

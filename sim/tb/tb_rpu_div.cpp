@@ -61,7 +61,7 @@ u128 random_bits(std::mt19937_64& rng, int width) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_div");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_div>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_div");

@@ -4,7 +4,9 @@
 // outputs rd_valid_o, rd_data_o and wr_ready_o equal the twin's; every read returns the oldest
 // accepted write (nothing lost, duplicated or reordered); a held output (rd_valid_o && !rd_ready_i)
 // stays valid and unchanged. The run must have filled the FIFO and drained it (counted, printed,
-// required), so it cannot pass without exercising both ends.
+// required), so it cannot pass without exercising both ends. At some phase changes the reset is
+// asserted in the middle of traffic (1..3 cycles, random inputs while it is low): afterwards the
+// FIFO must be empty like a fresh twin (a pointer or valid register the reset forgets shows up).
 #include <deque>
 #include <memory>
 
@@ -30,7 +32,7 @@ int main(int argc, char** argv) {
   const u128 mask = fixed::max_unsigned(kWidth);
   const auto rand_data = [&] { return ((static_cast<u128>(rng()) << 64) | rng()) & mask; };
 
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_fifo");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_fifo>(ctx.get());
   top->wr_valid_i = 0;
@@ -40,15 +42,17 @@ int main(int argc, char** argv) {
   ref::Fifo twin(kLog2);
   std::deque<u128> order;  // accepted writes not yet read
   const long cycles = sim::vector_count(200000);
-  long reads = 0, writes = 0, dropped = 0, full_cycles = 0, empty_cycles = 0;
+  long reads = 0, writes = 0, dropped = 0, full_cycles = 0, empty_cycles = 0, resets = 0;
   int wr_pct = 50, rd_pct = 50;
   long phase_left = 0;
   bool held = false;
   u128 held_data = 0;
   const auto fail = [&](long cycle, const char* what, u128 expected, u128 actual) {
-    std::printf("FAILURE at cycle %ld: %s\n  inputs: wr_valid %d rd_ready %d, fill (twin) %zu\n"
+    std::printf("FAILURE at cycle %ld (after %ld resets): %s\n"
+                "  inputs: wr_valid %d rd_ready %d, fill (twin) %zu\n"
                 "  expected %s\n  actual   %s\n",
-                cycle, what, static_cast<int>(top->wr_valid_i), static_cast<int>(top->rd_ready_i),
+                cycle, resets, what, static_cast<int>(top->wr_valid_i),
+                static_cast<int>(top->rd_ready_i),
                 twin.mem.size() + (twin.out_valid ? 1 : 0), sim::to_string(expected).c_str(),
                 sim::to_string(actual).c_str());
     return 1;
@@ -56,6 +60,20 @@ int main(int argc, char** argv) {
 
   for (long cycle = 0; cycle < cycles; ++cycle) {
     if (phase_left-- <= 0) {
+      if (rng() % 4 == 0 && !order.empty()) {  // a reset in the middle of traffic
+        top->rst_ni = 0;
+        for (int k = 1 + static_cast<int>(rng() % 3); k > 0; --k) {
+          top->wr_valid_i = rng() & 1;
+          sim::put(top->wr_data_i, static_cast<sim::i128>(rand_data()), kWidth);
+          top->rd_ready_i = rng() & 1;
+          sim::tick(*top, *ctx);
+        }
+        top->rst_ni = 1;
+        twin = ref::Fifo(kLog2);
+        order.clear();
+        held = false;
+        ++resets;
+      }
       phase_left = 1 + static_cast<long>(rng() % 2000);
       const int kind = static_cast<int>(rng() % 6);
       wr_pct = std::vector<int>{100, 90, 50, 10, 100, 0}[kind];
@@ -96,10 +114,10 @@ int main(int argc, char** argv) {
     sim::tick(*top, *ctx);
   }
   std::printf("tb_rpu_fifo: width %d depth %d: %ld writes, %ld reads, %ld writes refused while "
-              "full, %ld full cycles, %ld empty cycles\n",
-              kWidth, 1 << kLog2, writes, reads, dropped, full_cycles, empty_cycles);
-  if (full_cycles == 0 || empty_cycles == 0 || reads == 0) {
-    std::printf("FAILURE: the run did not fill and drain the FIFO\n");
+              "full, %ld full cycles, %ld empty cycles, %ld resets in traffic\n",
+              kWidth, 1 << kLog2, writes, reads, dropped, full_cycles, empty_cycles, resets);
+  if (full_cycles == 0 || empty_cycles == 0 || reads == 0 || resets == 0) {
+    std::printf("FAILURE: the run did not fill and drain the FIFO and reset it in traffic\n");
     return 1;
   }
   std::printf("matched %ld items\n", reads);

@@ -122,7 +122,7 @@ i128 random_t(std::mt19937_64& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_guide_pair");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_guide_pair>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_guide_pair");

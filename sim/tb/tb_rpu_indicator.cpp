@@ -243,7 +243,7 @@ ref::SurfaceDesc edit(ref::SurfaceDesc s, std::mt19937_64& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_indicator");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_indicator>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_indicator");

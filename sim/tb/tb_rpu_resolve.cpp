@@ -75,7 +75,7 @@ std::string hex(u128 v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_resolve");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_resolve>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_resolve");

@@ -29,7 +29,7 @@ struct Item {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_sqrt");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_sqrt>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_sqrt");

@@ -227,7 +227,7 @@ ref::SurfaceDesc with_end_angle(ref::SurfaceDesc d, std::uint64_t end) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_surface_setup");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_surface_setup>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_surface_setup");

@@ -136,7 +136,7 @@ void drive_junk(Vrpu_surface_top& top, std::mt19937_64& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_surface_top");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_surface_top>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_surface_top");
