@@ -9,7 +9,7 @@ at time zero through DPI from RPU_MUTSEL (sim/mutation/rpu_mutsel.cpp): 0 is the
 which must pass first. Each mutant then runs the testbench (its CTest arguments) with a timeout.
 
   killed       the testbench failed (non-zero exit or a signal)
-  timeout      it ran 10x the unmutated run time + 20 s (counted as detected)
+  timeout      it ran 4x the unmutated run time + 20 s (counted as detected)
   survived     it passed: a test gap, or a mutant equivalent to the design
   dead         Yosys's opt_clean removed the mutation's selector compare: the mutated signal
                reaches no output, so the mutant is equivalent (not run, not in the score)
@@ -352,7 +352,7 @@ def main() -> int:
             for sel, fam, line, live in ms:
                 status_of[(tb, sel)] = "not compiled"
             continue
-        timeout = 10 * t0 + 20
+        timeout = 4 * t0 + 20
         todo = []
         for sel, fam, line, live in ms:
             key = mutation_key(line)

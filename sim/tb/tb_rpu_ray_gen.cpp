@@ -3,10 +3,16 @@
 // with HwParams {dir_frac = DIR_FRAC, edge_frac = EDGE_FRAC}. RAYGEN_FULL: every pixel of curve12,
 // the four corners of both images, random airfield pixels and a stretch where the two cameras
 // alternate pixel by pixel; otherwise corners and a few thousand random pixels of both scenes.
+// Then synthetic cameras, one per pixel: random edge vectors over the whole port range (they are
+// exact for every input) and random v0, dx, dy, i, j over the whole index range, within the
+// header's preconditions (every component of v0 + i·dx + j·dy fits Q(4.FV+14), |v| > 1/2); and
+// directions with v·v = k² − 1 (v = ±(b², b, b) permuted, b even), where one unit of the
+// radicand changes |v|.
 // Random valid gaps with garbage on every data input in the gaps (each pixel samples its own
 // camera ports with valid_i); every output field, the tag and the latency compared in order.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <deque>
 #include <memory>
 #include <string>
@@ -123,7 +129,7 @@ struct Scene {
 };
 
 struct Pixel {
-  int scene, i, j;
+  int cam, i, j;  // cams[cam]
 };
 
 struct Item {
@@ -136,6 +142,38 @@ struct Item {
 i128 random_bits(std::mt19937_64& rng, int width) {
   const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
   return static_cast<i128>(bits & fixed::max_unsigned(width));
+}
+i128 random_signed(std::mt19937_64& rng, int width) {
+  const u128 u = static_cast<u128>(random_bits(rng, width)), sign = u128{1} << (width - 1);
+  return static_cast<i128>((u ^ sign) - sign);
+}
+bool fits_signed(i128 v, int width) {
+  return v >= -(i128{1} << (width - 1)) && v < (i128{1} << (width - 1));
+}
+
+// A synthetic camera for pixel (i, j) whose direction v0 + i·dx + j·dy is `vg` (Q(4.FV+14)):
+// dx, dy random (at a random scale), v0 what is left; false if v0 does not fit its port.
+bool synth_camera(std::mt19937_64& rng, const V3& vg, int i, int j, ref::CameraDesc& cam) {
+  V3 dx{}, dy{}, v0{};
+  const int scale = static_cast<int>(rng() % static_cast<unsigned>(kVgW - kIdxW));
+  for (size_t c = 0; c < 3; ++c) {
+    dx[c] = random_signed(rng, scale + 1);
+    dy[c] = random_signed(rng, scale + 1);
+    v0[c] = vg[c] - dx[c] * i - dy[c] * j;
+    if (!fits_signed(v0[c], kVgW)) return false;
+  }
+  const auto iv = [](const V3& v) {
+    return ref::IVec3{static_cast<std::int64_t>(v[0]), static_cast<std::int64_t>(v[1]),
+                      static_cast<std::int64_t>(v[2])};
+  };
+  cam.v0 = iv(v0);
+  cam.dx = iv(dx);
+  cam.dy = iv(dy);
+  cam.el0 = iv({random_signed(rng, kEgW), random_signed(rng, kEgW), random_signed(rng, kEgW)});
+  cam.et0 = iv({random_signed(rng, kEgW), random_signed(rng, kEgW), random_signed(rng, kEgW)});
+  cam.sw = iv({random_signed(rng, kEgW), random_signed(rng, kEgW), random_signed(rng, kEgW)});
+  cam.width = cam.height = 1 << kIdxW;
+  return true;
 }
 
 // Garbage on every data input (a gap cycle).
@@ -164,7 +202,7 @@ void drive_camera(Vrpu_ray_gen& top, const ref::CameraDesc& cam) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_ray_gen");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_ray_gen>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_ray_gen");
@@ -189,6 +227,8 @@ int main(int argc, char** argv) {
     scenes.push_back({name, ref::quantize_scene(scene::compile_scene(sc), params)});
   }
   const Scene& curve = scenes[0];
+  std::vector<ref::CameraDesc> cams = {scenes[0].model.camera, scenes[1].model.camera};
+  std::vector<std::string> cam_names = {scenes[0].name, scenes[1].name};
   for (const Scene& s : scenes)
     if (s.model.camera.width > (1 << kIdxW) || s.model.camera.height > (1 << kIdxW)) {
       std::printf("FAILURE: %s is %dx%d, wider than IdxW = %d bits\n", s.name.c_str(),
@@ -199,12 +239,12 @@ int main(int argc, char** argv) {
   // The pixel list.
   std::deque<Pixel> pixels;
   const auto corners = [&](int k) {
-    const ref::CameraDesc& c = scenes[static_cast<size_t>(k)].model.camera;
+    const ref::CameraDesc& c = cams[static_cast<size_t>(k)];
     for (int j : {0, c.height - 1})
       for (int i : {0, c.width - 1}) pixels.push_back({k, i, j});
   };
   const auto random_pixel = [&](int k) {
-    const ref::CameraDesc& c = scenes[static_cast<size_t>(k)].model.camera;
+    const ref::CameraDesc& c = cams[static_cast<size_t>(k)];
     pixels.push_back({k, static_cast<int>(rng() % static_cast<unsigned>(c.width)),
                       static_cast<int>(rng() % static_cast<unsigned>(c.height))});
   };
@@ -223,6 +263,41 @@ int main(int argc, char** argv) {
     n_mixed = sim::vector_count(4000);
     for (long k = 0; k < n_mixed; ++k) random_pixel(static_cast<int>(rng() & 1));
   }
+  // Synthetic cameras (see the header), one per pixel.
+  const long n_synth = sim::vector_count(3000), n_square = 500;
+  long made = 0, made_sq = 0;
+  while (made + made_sq < n_synth + n_square) {
+    const bool square = made_sq < n_square && (made >= n_synth || rng() % 8 == 0);
+    const int i = static_cast<int>(random_bits(rng, kIdxW));
+    const int j = static_cast<int>(random_bits(rng, kIdxW));
+    V3 vg;
+    if (square) {
+      // v = (b², b, b) in Q(4.FV): v·v = (b² + 1)² − 1; b even so that v·v is even and bit 0 of
+      // the radicand is 0; b² in [1/2, 8) so that |v| > 1/2 and the component fits.
+      const i128 lo = static_cast<i128>(std::ceil(std::sqrt(std::ldexp(1.0, kFv - 1))));
+      const i128 hi = static_cast<i128>(std::floor(std::sqrt(std::ldexp(8.0, kFv) - 1)));
+      i128 b = lo + static_cast<i128>(rng() % static_cast<std::uint64_t>(hi - lo + 1));
+      b += b & 1;
+      if (b * b >= 8 * (i128{1} << kFv)) b -= 2;
+      V3 v = {b * b, b, b};
+      std::swap(v[0], v[rng() % 3]);
+      for (size_t c = 0; c < 3; ++c)
+        vg[c] = (rng() % 2 ? v[c] : -v[c]) * (i128{1} << kGuard) + random_bits(rng, kGuard);
+    } else {
+      for (size_t c = 0; c < 3; ++c) vg[c] = random_signed(rng, kVgW);
+      // |v| > 1/2 (with the guard bits dropped: a little margin).
+      double n2 = 0;
+      for (size_t c = 0; c < 3; ++c)
+        n2 += std::pow(std::ldexp(static_cast<double>(vg[c]), -(kFv + kGuard)), 2);
+      if (n2 < 0.3) continue;
+    }
+    ref::CameraDesc cam;
+    if (!synth_camera(rng, vg, i, j, cam)) continue;
+    cams.push_back(cam);
+    cam_names.push_back(square ? "synthetic v.v = k^2-1" : "synthetic");
+    pixels.push_back({static_cast<int>(cams.size() - 1), i, j});
+    (square ? made_sq : made) += 1;
+  }
 
   sim::reset(*top, *ctx);
   std::deque<Item> expected;
@@ -237,13 +312,13 @@ int main(int argc, char** argv) {
     if (issue) {
       const Pixel px = pixels.front();
       pixels.pop_front();
-      const ref::ModelScene& m = scenes[static_cast<size_t>(px.scene)].model;
-      drive_camera(*top, m.camera);
+      const ref::CameraDesc& cam = cams[static_cast<size_t>(px.cam)];
+      drive_camera(*top, cam);
       sim::put(top->i_i, px.i, kIdxW);
       sim::put(top->j_i, px.j, kIdxW);
       sim::put(top->tag_i, static_cast<i128>(tag & tag_mask), kTagW);
-      expected.push_back({px, ref::ray_generator(m.params, m.camera, px.i, px.j), tag & tag_mask,
-                          cycle});
+      expected.push_back({px, ref::ray_generator(scenes[0].model.params, cam, px.i, px.j),
+                          tag & tag_mask, cycle});
       ++tag;
     } else {
       drive_garbage(*top, rng);
@@ -275,10 +350,14 @@ int main(int argc, char** argv) {
       if (!ok) {
         std::printf("FAILURE cycle %ld item %ld: %s pixel (i = %d, j = %d), latency %ld (expected "
                     "%d), tag %llu (expected %llu)\n",
-                    cycle, matched, scenes[static_cast<size_t>(want.px.scene)].name.c_str(),
+                    cycle, matched, cam_names[static_cast<size_t>(want.px.cam)].c_str(),
                     want.px.i, want.px.j, cycle - want.issued, kLatency,
                     static_cast<unsigned long long>(got_tag),
                     static_cast<unsigned long long>(want.tag));
+        const ref::CameraDesc& c = cams[static_cast<size_t>(want.px.cam)];
+        std::printf("  camera v0 %s dx %s dy %s\n  el0 %s et0 %s sw %s\n", str(of(c.v0)).c_str(),
+                    str(of(c.dx)).c_str(), str(of(c.dy)).c_str(), str(of(c.el0)).c_str(),
+                    str(of(c.et0)).c_str(), str(of(c.sw)).c_str());
         for (const Field& f : fields)
           std::printf("  %-8s expected %s, got %s%s\n", f.name, str(f.want).c_str(),
                       str(f.got).c_str(), f.want == f.got ? "" : "  <-- differs");
@@ -302,7 +381,8 @@ int main(int argc, char** argv) {
   }
   top->final();
   std::printf("rpu_ray_gen DirFrac=%d EdgeFrac=%d IdxW=%d latency %d: matched %ld items (8 corners, "
-              "%ld curve12 all pixels, %ld airfield random, %ld mixed random) in %ld cycles\n",
-              kFv, kFe, kIdxW, kLatency, matched, n_curve, n_air, n_mixed, cycle);
+              "%ld curve12 all pixels, %ld airfield random, %ld mixed random, %ld synthetic "
+              "cameras, %ld with v.v = k^2-1) in %ld cycles\n",
+              kFv, kFe, kIdxW, kLatency, matched, n_curve, n_air, n_mixed, made, made_sq, cycle);
   return 0;
 }

@@ -187,7 +187,7 @@ scene::Scene random_scene(std::mt19937_64& rng, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_sphere");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_sphere>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_sphere");

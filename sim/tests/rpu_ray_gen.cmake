@@ -2,7 +2,9 @@
 # scenes/airfield.json from the scene compiler. Default widths (FV = 24, FE = 16): every pixel of
 # curve12, the corners, 40,000 random airfield pixels and alternating cameras; FV = FE = 12: a
 # few thousand random pixels of both scenes, shrunk to 32 pixels a side (a pixel must span 64
-# direction LSBs for the compiler to accept the view).
+# direction LSBs for the compiler to accept the view). Both then take 3,500 synthetic cameras
+# (random edge vectors over the port range, directions within the header's preconditions, and
+# v·v = k² − 1).
 set(RPU_RAY_GEN_SOURCES ${RPU_RTL_DIR}/rpu_ray_gen.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_mul.v
                         ${RPU_RTL_DIR}/rpu_div.v)
 rpu_verilated_test(tb_rpu_ray_gen TOP rpu_ray_gen TB tb/tb_rpu_ray_gen.cpp
