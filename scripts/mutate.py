@@ -274,6 +274,9 @@ def main() -> int:
                     help="the fixed CTest set: fail unless every mutant is killed")
     ap.add_argument("--report", default="", help="write the markdown report to this file")
     ap.add_argument("--fresh", action="store_true", help="forget earlier results of this build")
+    ap.add_argument("--report-only", action="store_true",
+                    help="no build, no run: the report from the results so far (mutants not "
+                         "run yet are counted as such)")
     ap.add_argument("--rerun", default="",
                     help="comma-separated statuses to run again (e.g. survived,timeout: after "
                          "the tests improved)")
@@ -292,13 +295,15 @@ def main() -> int:
 
     build = Path(a.build_dir).resolve()
     work = build / "mutation"
-    mutant_dir = work / "designs"
+    # A report does not touch the designs a running build may be compiling.
+    mutant_dir = work / ("designs-report" if a.report_only else "designs")
     results_path = work / "results.tsv"
     if a.fresh and results_path.exists():
         results_path.unlink()
 
     # 1. The manifest (an ordinary configure), 2. the mutated designs, 3. the mutation build.
-    configure(build, None)
+    if not a.report_only:
+        configure(build, None)
     manifest = read_manifest(build)
     for f in plan:
         if f.tb not in manifest:
@@ -313,7 +318,8 @@ def main() -> int:
     for tb, fams in tbs.items():
         mutants[tb] = elaborate(tb, manifest, fams, a.seed, work, mutant_dir)
         print(f"{tb}: {len(mutants[tb])} mutants of {', '.join(f.name for f in fams)}", flush=True)
-    configure(build, mutant_dir)
+    if not a.report_only:
+        configure(build, mutant_dir)
 
     done: dict[tuple[str, str], str] = {}
     if results_path.exists():
@@ -325,7 +331,11 @@ def main() -> int:
     results = open(results_path, "a")
 
     status_of: dict[tuple[str, int], str] = {}
-    for tb, ms in mutants.items():
+    for tb, ms in (mutants.items() if a.report_only else []):
+        for sel, fam, line, live in ms:
+            key = mutation_key(line)
+            status_of[(tb, sel)] = ("dead" if not live else done.get((tb, key), "not run"))
+    for tb, ms in ([] if a.report_only else mutants.items()):
         log = work / f"{tb}.build.log"
         r = subprocess.run(["cmake", "--build", str(build), "-j", str(a.jobs), "--target", tb],
                            cwd=ROOT, stdout=open(log, "w"), stderr=subprocess.STDOUT,
@@ -379,7 +389,7 @@ def main() -> int:
     eq = load_equivalent()
     rows, survivors = [], []
     tot = {"mutants": 0, "killed": 0, "timeout": 0, "survived": 0, "dead": 0, "equivalent": 0,
-           "not compiled": 0}
+           "not compiled": 0, "not run": 0}
     for f in plan:
         c = {k: 0 for k in tot}
         for sel, fam, line, _ in mutants[f.tb]:
@@ -400,7 +410,7 @@ def main() -> int:
         rows.append((f, c))
 
     def score(c) -> str:
-        denom = c["mutants"] - c["dead"] - c["equivalent"] - c["not compiled"]
+        denom = c["mutants"] - c["dead"] - c["equivalent"] - c["not compiled"] - c["not run"]
         return f"{100.0 * (c['killed'] + c['timeout']) / denom:.1f} %" if denom else "n/a"
 
     lines = ["| module | testbench | mutants | killed | timeout | survived | dead | equivalent | "
@@ -409,6 +419,8 @@ def main() -> int:
         lines.append(f"| `{f.name}` | `{f.tb}` | {c['mutants']} | {c['killed']} | {c['timeout']} | "
                      f"{c['survived']} | {c['dead']} | {c['equivalent']} | {c['not compiled']} | "
                      f"{score(c)} |")
+    if tot["not run"]:
+        lines.append(f"| (not run yet: {tot['not run']}) | | | | | | | | | |")
     lines.append(f"| **all** | | {tot['mutants']} | {tot['killed']} | {tot['timeout']} | "
                  f"{tot['survived']} | {tot['dead']} | {tot['equivalent']} | "
                  f"{tot['not compiled']} | **{score(tot)}** |")
