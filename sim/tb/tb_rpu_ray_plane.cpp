@@ -92,7 +92,7 @@ std::string str(const ref::IVec3& v) { return str(v.x, v.y, v.z); }
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_ray_plane");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_ray_plane>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_ray_plane");

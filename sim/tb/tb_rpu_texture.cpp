@@ -10,9 +10,11 @@
 // range (the clamp of (p0 − p1)·d at both ends, the widest products); 1 % also give p0 a non-zero
 // z (the port takes it; the twin uses it); 2 % edit a descriptor field to its port limit with p0
 // near the segment (an arc guide with the largest h: its radicand saturates and sets the overflow
-// bit; inv_s too small: t̂ saturates; w0_2 = 0 and its maximum); 3 % put p0 exactly on (or one
-// LSB off) an end plane and w0_2 exactly at (or one off) |p0 − p1|², |p0 − p2|² or |X − p0|²: the
-// equality cases of every comparison. RPU_VECTORS sets the pair count (default 100,000).
+// bit; inv_s too small: t̂ saturates; w0_2 = 0 and its maximum; a flat guide); 3 % put p0 exactly
+// on (or one LSB off) an end plane and w0_2 exactly at (or one off) |p0 − p1|², |p0 − p2|² or
+// |X − p0|²: the equality cases of every comparison (a quarter of them with p0 far along the
+// plane and w0_2 at |X − p0|²; a third of them with the axes rotated so that z carries data).
+// RPU_VECTORS sets the pair count (default 100,000).
 // Random valid gaps with junk on every data input between pairs; pr1, pr2, pr3, covers, t̂, X,
 // the overflow bit, the tag and the latency compared for every pair, in order.
 #include <algorithm>
@@ -162,7 +164,7 @@ void drive_junk(Vrpu_texture& top, std::mt19937_64& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = std::make_unique<VerilatedContext>();
+  auto ctx = sim::make_context("tb_rpu_texture");
   ctx->commandArgs(argc, argv);
   auto top = std::make_unique<Vrpu_texture>(ctx.get());
   const std::uint64_t seed = sim::test_seed("tb_rpu_texture");
@@ -226,7 +228,22 @@ int main(int argc, char** argv) {
                static_cast<i128>(rng() % static_cast<u128>(2 * reach + 1)) - reach;
       };
       const ref::WVec3 p0{near(s.p1.x, s.d.x), near(s.p1.y, s.d.y), 0};
-      switch (rng() % 5) {
+      switch (rng() % 6) {
+        case 5: {
+          // A flat guide as the descriptor compiler quantises one of height h beyond
+          // kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)): h from the threshold to 2^6 times it.
+          ref::GuideDesc& g = s.guide[rng() % 2];
+          const double L = std::sqrt(static_cast<double>(s.L2));
+          const double x = std::uniform_real_distribution<double>(0, 1)(rng);
+          const double h = L * ref::HwParams::kFlatRatio *
+                           (1.0 + 1e-6 + std::ldexp(x, static_cast<int>(rng() % 7)));
+          g.a = static_cast<fixed::i64>(std::llround(static_cast<double>(s.L2) / (2.0 * h)));
+          g.b = static_cast<fixed::i64>(
+              std::llround(std::ldexp(static_cast<double>(s.L2) / (4.0 * h * h), kFt)));
+          g.h = 0;
+          g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
+          break;
+        }
         case 0:
         case 1: {
           ref::GuideDesc& g = s.guide[rng() % 2];
@@ -253,8 +270,12 @@ int main(int argc, char** argv) {
       const fixed::i64 g = std::gcd(std::abs(s.d.x), std::abs(s.d.y));
       const fixed::i64 sx = -s.d.y / g, sy = s.d.x / g;  // d rotated by 90°, made primitive
       const double step = std::hypot(static_cast<double>(sx), static_cast<double>(sy));
-      const auto m_max = static_cast<fixed::i64>(3.0 * std::sqrt(static_cast<double>(s.w0_2)) /
-                                                 step) + 1;
+      // A quarter of them far along the plane (|p0 − X| up to 2^(CW−2)): w0_2 = |X − p0|² then
+      // tests pr3's comparison and |e|²'s high bits.
+      const bool far = rng() % 4 == 0;
+      const auto m_max =
+          far ? static_cast<fixed::i64>(std::ldexp(1.0, kCw) / step) + 1
+              : static_cast<fixed::i64>(3.0 * std::sqrt(static_cast<double>(s.w0_2)) / step) + 1;
       const fixed::i64 m = static_cast<fixed::i64>(rng() % static_cast<std::uint64_t>(2 * m_max + 1)) - m_max;
       const bool at_p2 = rng() % 2;
       const int off = static_cast<int>(rng() % 5);  // 0..1: on the plane; else ±1 LSB in x or y
@@ -272,10 +293,23 @@ int main(int argc, char** argv) {
       const i128 cand[] = {r1.x * r1.x + r1.y * r1.y + r1.z * r1.z,
                            r2.x * r2.x + r2.y * r2.y + r2.z * r2.z,
                            e.x * e.x + e.y * e.y + e.z * e.z};
-      const unsigned pick = static_cast<unsigned>(rng() % 4);  // 3: keep the scene's w0_2
+      // 3: keep the scene's w0_2; far: always |X − p0|²
+      const unsigned pick = far ? 2 : static_cast<unsigned>(rng() % 4);
       if (pick < 3) {
         const i128 w = cand[pick] + static_cast<i128>(rng() % 3) - 1;
         if (w >= 0 && w <= static_cast<i128>(fixed::max_unsigned(kW02w))) s.w0_2 = w;
+      }
+      if (rng() % 3 == 0) {
+        // The axes rotated, (x, y, z) -> (z, x, y), for p0, p1, d and the guide units: every
+        // dot product and |·|² (the boundaries above) is unchanged, but d_z, r1_z, r2_z, X_z and
+        // (X − p0)_z become non-zero (the scenes are flat: z = 0 otherwise).
+        const auto rot = [](auto& v) { v = {v.z, v.x, v.y}; };
+        rot(p0);
+        rot(s.p1);
+        rot(s.d);
+        rot(s.c0);
+        rot(s.guide[0].u);
+        rot(s.guide[1].u);
       }
       add_desc(k, seg, s, -1, -1, kExact, p0);
       continue;
