@@ -1,6 +1,7 @@
 // rpu_surface_setup against its twin rpu::ref::surface_setup, on real SurfaceDescs: every surface
 // of scenes/surf_{ellipsoid,relief,spiral,snail,rocket,mix}.json quantised at the parameters of
-// this build, driven with
+// this build, and again with every surface turned by (23°, 37°, 61°) more (no zero entry in its
+// local-frame matrix), driven with
 //   - random pixels of the scene's own camera (the model's ray generator), mostly pairs whose
 //     bounding sphere is met, some that miss;
 //   - random rays through the bounding sphere from outside it, and from an eye inside it;
@@ -240,15 +241,25 @@ int main(int argc, char** argv) {
   std::deque<ref::SurfaceDesc> variants;
   std::vector<Surf> surfs;
   std::vector<ref::CameraDesc> cams;  // per surface: its scene's camera
-  for (const char* name : {"surf_ellipsoid", "surf_relief", "surf_spiral", "surf_snail",
-                           "surf_rocket", "surf_mix"}) {
-    scenes.push_back(scene::compile_scene(
-        scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json")));
-    const ref::ModelScene m = ref::quantize_scene(scenes.back(), kP);
-    for (size_t k = 0; k < m.surfaces.size(); ++k) {
-      surfs.push_back({std::string(name) + "[" + std::to_string(k) + "]",
-                       &scenes.back().surfaces[k], m.norm, m.surfaces[k]});
-      cams.push_back(m.camera);
+  // Each scene twice: as written, and with every surface turned by (23°, 37°, 61°) more about
+  // x, y, z, so every entry of the local-frame matrix is nonzero (the scenes' own placements
+  // leave some at zero, e.g. M[1][0] after a 90° turn about x, and their products untested).
+  for (int turned = 0; turned < 2; ++turned) {
+    for (const char* name : {"surf_ellipsoid", "surf_relief", "surf_spiral", "surf_snail",
+                             "surf_rocket", "surf_mix"}) {
+      scene::Scene sc =
+          scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json");
+      if (turned)
+        for (scene::Surface& s : sc.surfaces)
+          s.rotation_deg = {s.rotation_deg.x + 23.0, s.rotation_deg.y + 37.0,
+                            s.rotation_deg.z + 61.0};
+      scenes.push_back(scene::compile_scene(sc));
+      const ref::ModelScene m = ref::quantize_scene(scenes.back(), kP);
+      for (size_t k = 0; k < m.surfaces.size(); ++k) {
+        surfs.push_back({std::string(name) + (turned ? "/turned[" : "[") + std::to_string(k) + "]",
+                         &scenes.back().surfaces[k], m.norm, m.surfaces[k]});
+        cams.push_back(m.camera);
+      }
     }
   }
   std::printf("%zu surfaces:", surfs.size());

@@ -5,9 +5,11 @@
 //                checks cycles ≤ items + latency + 8 (unrolled) and reports latency and rate
 //   backpressure random valid and ready with long stalls: the in-order scoreboard proves
 //                nothing is lost, duplicated or reordered
-// Options: --scene NAME (default curve12), --size N (square side, default 64), --x-seed S
+// Options: --scene NAME[+NAME...] (default curve12; several: the first one's camera, all their
+// primitives), --size N (square side, default 64), --x-seed S
 // (Verilator's random initial values; every seed must give the same results), --config NAME
 // (a Verilated configuration of rpu_rtl, default n16_n1_2_unrolled).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -64,8 +66,23 @@ int main(int argc, char** argv) {
     return 1;
   }
   const std::uint64_t seed = sim::test_seed("tb_rpu_top");
-  scene::Scene scn =
-      scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + scene_name + ".json");
+  // NAME or NAME+OTHER+...: the first scene's camera with every scene's primitives (a frame
+  // that mixes curve and texture items, so the order FIFO merges both result streams).
+  scene::Scene scn;
+  for (std::size_t at = 0, k = 0; at <= scene_name.size(); ++k) {
+    const std::size_t end = std::min(scene_name.find('+', at), scene_name.size());
+    const scene::Scene part = scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" +
+                                                scene_name.substr(at, end - at) + ".json");
+    if (k == 0) {
+      scn = part;
+    } else {
+      scn.curves.insert(scn.curves.end(), part.curves.begin(), part.curves.end());
+      scn.textures.insert(scn.textures.end(), part.textures.begin(), part.textures.end());
+      scn.surfaces.insert(scn.surfaces.end(), part.surfaces.begin(), part.surfaces.end());
+      scn.patches.insert(scn.patches.end(), part.patches.begin(), part.patches.end());
+    }
+    at = end + 1;
+  }
   scn.camera.width = size;
   scn.camera.height = size;
   const scene::CompiledScene sc = scene::compile_scene(scn);
