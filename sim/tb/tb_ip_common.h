@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "model/units.h"
@@ -11,6 +12,58 @@
 #include "tb_common.h"
 
 namespace rpu::sim {
+
+// A random value of `width` bits, sign-extended.
+inline i128 random_signed(std::mt19937_64& rng, int width) {
+  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
+  const u128 u = bits & ((u128{1} << width) - 1), sign = u128{1} << (width - 1);
+  return static_cast<i128>((u ^ sign) - sign);
+}
+
+// How edit_guide draws (each testbench keeps the stream its mutants were measured with).
+struct GuideEdit {
+  int octave_shift = 0;        // a flat guide's h: kFlatRatio·L·(1 + 2^(octave + shift)·U[0,1))
+  bool unused_mode = false;    // kind 7: the unused mode code 3 (acts as straight), else straight
+  bool flat_near_threshold = false;  // always flat, h just above the threshold (2^-6 octave)
+};
+
+// A guide as the descriptor compiler would quantise one of height h (in LSB) on a segment of
+// length² L2: flat beyond kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)), else an arc or
+// straight. A straight end (no direction) gets a random unit direction first.
+inline void edit_guide(const ref::HwParams& p, i128 L2, std::mt19937_64& rng, ref::GuideDesc& g,
+                       const GuideEdit& how = {}) {
+  if (g.u == ref::IVec3{}) {
+    std::normal_distribution<double> nd;
+    const double v[3] = {nd(rng), nd(rng), nd(rng)};
+    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 1e-30;
+    const auto q = [&](double c) {
+      return static_cast<std::int64_t>(std::llround(std::ldexp(c / n, p.unit_frac)));
+    };
+    g.u = {q(v[0]), q(v[1]), q(v[2])};
+  }
+  const double L = std::sqrt(static_cast<double>(L2));
+  const unsigned kind = how.flat_near_threshold ? 0 : static_cast<unsigned>(rng() % 8);
+  if (kind < 5) {  // flat: h from just above the threshold to 2^12 times it
+    const int octave =
+        how.flat_near_threshold ? -6 : static_cast<int>(rng() % 13) + how.octave_shift;
+    const double h = L * ref::HwParams::kFlatRatio *
+                     (1.0 + 1e-6 + std::ldexp(std::uniform_real_distribution<double>(0, 1)(rng),
+                                              octave));
+    g.a = static_cast<std::int64_t>(std::llround(static_cast<double>(L2) / (2.0 * h)));
+    g.b = static_cast<std::int64_t>(
+        std::llround(std::ldexp(static_cast<double>(L2) / (4.0 * h * h), p.t_frac)));
+    g.h = 0;
+    g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
+  } else if (kind == 5) {  // arc, h in [L/2, 16·L]
+    g.h = static_cast<std::int64_t>(
+        std::llround(L * std::uniform_real_distribution<double>(0.5, 16)(rng)));
+    g.mode = ref::GuideMode::kArc;
+  } else if (kind == 6 || !how.unused_mode) {
+    g.mode = ref::GuideMode::kStraight;
+  } else {
+    g.mode = static_cast<ref::GuideMode>(3);
+  }
+}
 
 // A pair whose ray meets the segment's interpolation sphere: a pixel at or beside the projection
 // of a random point of a random segment's curve (so both hits and near misses).

@@ -39,48 +39,6 @@ struct Item {
   bool ovf;
 };
 
-i128 random_signed(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  const u128 u = bits & ((u128{1} << width) - 1), sign = u128{1} << (width - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
-
-// A guide as the descriptor compiler would quantise one of height h (in LSB) on a segment of
-// length² L2: flat beyond kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)), else an arc.
-void edit_guide(const ref::HwParams& p, i128 L2, std::mt19937_64& rng, ref::GuideDesc& g,
-                bool flat_near_threshold = false) {
-  if (g.u == ref::IVec3{}) {  // a straight end has no direction: give it a random unit one
-    std::normal_distribution<double> nd;
-    double v[3] = {nd(rng), nd(rng), nd(rng)};
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 1e-30;
-    const auto q = [&](double c) {
-      return static_cast<std::int64_t>(std::llround(std::ldexp(c / n, p.unit_frac)));
-    };
-    g.u = {q(v[0]), q(v[1]), q(v[2])};
-  }
-  const double L = std::sqrt(static_cast<double>(L2));
-  const unsigned kind = flat_near_threshold ? 0 : static_cast<unsigned>(rng() % 8);
-  if (kind < 5) {  // flat: h from just above the threshold to 2^12 times it
-    const int octave = flat_near_threshold ? -6 : static_cast<int>(rng() % 13);
-    const double h = L * ref::HwParams::kFlatRatio *
-                     (1.0 + 1e-6 + std::ldexp(std::uniform_real_distribution<double>(0, 1)(rng),
-                                              octave));
-    g.a = static_cast<std::int64_t>(std::llround(static_cast<double>(L2) / (2.0 * h)));
-    g.b = static_cast<std::int64_t>(
-        std::llround(std::ldexp(static_cast<double>(L2) / (4.0 * h * h), p.t_frac)));
-    g.h = 0;
-    g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
-  } else if (kind == 5) {  // arc, h in [L/2, 16·L]
-    g.h = static_cast<std::int64_t>(
-        std::llround(L * std::uniform_real_distribution<double>(0.5, 16)(rng)));
-    g.mode = ref::GuideMode::kArc;
-  } else if (kind == 6) {
-    g.mode = ref::GuideMode::kStraight;
-  } else {
-    g.mode = static_cast<ref::GuideMode>(3);  // the unused code: acts as straight
-  }
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -123,7 +81,7 @@ int main(int argc, char** argv) {
       s.L2 = i128{s.d.x} * s.d.x + i128{s.d.y} * s.d.y + i128{s.d.z} * s.d.z;
       for (ref::GuideDesc& g : s.guide) {
         g.u = {};
-        edit_guide(p, s.L2, rng, g, true);
+        sim::edit_guide(p, s.L2, rng, g, {.unused_mode = true, .flat_near_threshold = true});
       }
       const i128 one = i128{1} << p.t_frac;
       pair.si.alpha = one / 4 + static_cast<i128>(rng() % static_cast<std::uint64_t>(one / 4));
@@ -132,11 +90,11 @@ int main(int argc, char** argv) {
       ++n_long;
     } else if (edited) {
       for (ref::GuideDesc& g : s.guide)
-        if (rng() % 4 != 0) edit_guide(p, s.L2, rng, g);
+        if (rng() % 4 != 0) sim::edit_guide(p, s.L2, rng, g, {.unused_mode = true});
       switch (rng() % 4) {
         case 0:  // α, β anywhere in Q(3.FT)
-          pair.si.alpha = random_signed(rng, TW);
-          pair.si.beta = random_signed(rng, TW);
+          pair.si.alpha = sim::random_signed(rng, TW);
+          pair.si.beta = sim::random_signed(rng, TW);
           break;
         case 1: {  // the range ends: t saturates high or low along the interval
           const i128 t_max = (i128{1} << (TW - 1)) - 1, t_min = -(i128{1} << (TW - 1));

@@ -56,44 +56,6 @@ struct Item {
   unsigned tag;
 };
 
-i128 random_signed(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  const u128 u = bits & ((u128{1} << width) - 1), sign = u128{1} << (width - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
-
-// A guide as the descriptor compiler would quantise one of height h on a segment of length² L2:
-// flat beyond kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)), else an arc (or straight).
-void edit_guide(const ref::HwParams& p, i128 L2, std::mt19937_64& rng, ref::GuideDesc& g) {
-  if (g.u == ref::IVec3{}) {  // a straight end has no direction: give it a random unit one
-    std::normal_distribution<double> nd;
-    const double v[3] = {nd(rng), nd(rng), nd(rng)};
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 1e-30;
-    const auto q = [&](double c) {
-      return static_cast<std::int64_t>(std::llround(std::ldexp(c / n, p.unit_frac)));
-    };
-    g.u = {q(v[0]), q(v[1]), q(v[2])};
-  }
-  const double L = std::sqrt(static_cast<double>(L2));
-  const unsigned kind = static_cast<unsigned>(rng() % 8);
-  if (kind < 5) {  // flat: h from just above the threshold to 2^12 times it
-    const double h = L * ref::HwParams::kFlatRatio *
-                     (1.0 + 1e-6 + std::ldexp(std::uniform_real_distribution<double>(0, 1)(rng),
-                                              static_cast<int>(rng() % 13) - 6));
-    g.a = static_cast<std::int64_t>(std::llround(static_cast<double>(L2) / (2.0 * h)));
-    g.b = static_cast<std::int64_t>(
-        std::llround(std::ldexp(static_cast<double>(L2) / (4.0 * h * h), p.t_frac)));
-    g.h = 0;
-    g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
-  } else if (kind == 5) {  // arc, h in [L/2, 16·L]
-    g.h = static_cast<std::int64_t>(
-        std::llround(L * std::uniform_real_distribution<double>(0.5, 16)(rng)));
-    g.mode = ref::GuideMode::kArc;
-  } else {
-    g.mode = ref::GuideMode::kStraight;
-  }
-}
-
 // Edits a quarter of the pairs (see the header); returns 0 (kept), 1 (edited) or 2 (far miss).
 int edit_pair(const ref::HwParams& p, std::mt19937_64& rng, ref::SegmentDesc& s,
               ref::SearchInterval& si) {
@@ -133,10 +95,10 @@ int edit_pair(const ref::HwParams& p, std::mt19937_64& rng, ref::SegmentDesc& s,
     return 2;
   }
   for (ref::GuideDesc& g : s.guide)
-    if (rng() % 4 != 0) edit_guide(p, s.L2, rng, g);
+    if (rng() % 4 != 0) sim::edit_guide(p, s.L2, rng, g, {.octave_shift = -6});
   if (rng() % 2 == 0) {  // α, β anywhere in Q(3.FT)
-    si.alpha = random_signed(rng, TW);
-    si.beta = random_signed(rng, TW);
+    si.alpha = sim::random_signed(rng, TW);
+    si.beta = sim::random_signed(rng, TW);
   }
   return 1;
 }
