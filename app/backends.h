@@ -1,5 +1,6 @@
-// The four backends of SCENE.md behind one call: float, float-ip, ref and rtl (the Verilated
-// rpu_top, when this program is built with the co-simulation, RPU_SIM=ON).
+// The four backends of the command line (README "Command line") behind one call: float, float-ip,
+// ref and rtl (the Verilated rpu_top, when this program is built with the co-simulation,
+// RPU_SIM=ON).
 #pragma once
 
 #include <optional>
@@ -22,7 +23,8 @@ struct BackendOptions {
   ref::HwParams hw;                 // the model's and the RTL's parameters
   tracer::FloatOptions fl;          // n, n1, threads, binning, grid of the float tracers
   ref::RefOptions ref;              // threads, binning, grid of the model (and the RTL schedule)
-  patch::PatchRenderOptions patch;  // float, float-ip: method, map of the patches (ALGORITHM 4)
+  patch::PatchRenderOptions patch;  // float, float-ip: method, map of the patches
+                                    // (docs/algorithms.md §4)
   bool systemc = false;             // rtl: the SystemC harness instead of the C++ one
   int fault = 0;                    // rtl: the fault-injected build's fault (checker tests;
                                     // sim::RtlOptions::fault)

@@ -1,5 +1,5 @@
-// `rpu compare SCENE --out DIR` (SCENE.md): every backend on one scene, the RTL checked against
-// the model work item by work item, and the report (compare_report.h).
+// `rpu compare SCENE --out DIR` (README "Command line"): every backend on one scene, the RTL
+// checked against the model work item by work item, and the report (compare_report.h).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The report of `rpu compare` (SCENE.md "Command line"): the backends' images, their pairwise
+// The report of `rpu compare` (README "Command line"): the backends' images, their pairwise
 // difference images, a disagreement heat map, metrics.json and a self-contained report.html.
 // Rendering the images is the caller's business; this module only compares and writes.
 #pragma once
@@ -48,6 +48,12 @@ struct CompareSummary {
 // two hit counts) of every demo scene. Beyond it compare warns (stderr, metrics.json, banner);
 // the exit status is unchanged (2 is reserved for RTL != model).
 inline constexpr double kRefVsFloatIpBound = 0.001;
+
+// ... and never on this many differing pixels or fewer, whatever the frame: at 0.1 % a frame
+// needs 1,000 hit pixels before one pixel may differ, and a pixel whose closest approach lies on
+// a pixel edge to within the IP's resolution goes either way in any frame (docs/verification.md,
+// "Fuzzing": the ambiguous pixels). One pixel of 295 is not a finding.
+inline constexpr size_t kRefVsFloatIpSlackPixels = 2;
 
 // The compared pairs, in report order: (a, b) gives diff_<a>_vs_<b>.png and the metrics key
 // <a>_vs_<b>_mismatched_pixels ('-' written '_').
@@ -104,7 +110,8 @@ void check_compare_output(const std::string& out_dir, const std::string& input_f
 
 // ref vs float-ip as compare measures it against kRefVsFloatIpBound: the pixels whose primitive
 // differs (image::count_differing_pixels), the hit pixels (the larger of the two hit counts),
-// their fraction (0 without hits) and whether the difference is beyond the bound. The frames
+// their fraction (0 without hits) and whether the difference is beyond the bound (more than
+// kRefVsFloatIpBound of the hit pixels and more than kRefVsFloatIpSlackPixels). The frames
 // must have one size. metrics.json's ref_vs_float_ip_* hold these; fuzz/fuzz_render checks them.
 struct RefVsFloatIp {
   size_t differing = 0;

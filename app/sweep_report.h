@@ -1,4 +1,4 @@
-// The report of `rpu sweep` (SCENE.md "Command line"): from the sweep's results.json rows, three
+// The report of `rpu sweep` (README "Command line"): from the sweep's results.json rows, three
 // plots written as SVG text and an index.html that shows them with the Pareto configurations and
 // the full results table. Running the configurations and writing results.csv / results.json are
 // the caller's business; this module only plots and writes.
@@ -51,10 +51,14 @@ struct SweepPlots {
 //     line per n (split further when other parameters vary too, see kSweepParameters).
 //   mismatches_vs_coord_w.svg: two panels over a shared coord_w axis and a shared y axis,
 //     ref_vs_float_total and ref_vs_float_ip_total; one line per (n, n1) (split likewise).
-//   index.html: the three plots, the Pareto configurations, and the full results table including
-//     failed and invalid rows with their error, every text HTML-escaped; links to results.csv and
-//     results.json, which the caller writes next to it.
-// A plot without data is written with a "no data" note. Throws rpu::Error naming the path on I/O
+//   index.html: the plots written, the Pareto configurations, and the full results table
+//     including failed and invalid rows with their error, every text HTML-escaped; links to
+//     results.csv and results.json, which the caller writes next to it. Its title is
+//     "rpu sweep: <title>".
+// A panel without data is left out of its plot, and a plot without any is not written (its file
+// from an earlier run in out_dir is removed): a sweep without Yosys has no LUT plots. A panel of
+// a written plot that has no points of its own while another has (never the case after the
+// filtering above) would carry a "no data" note. Throws rpu::Error naming the path on I/O
 // failure, and naming "sweep results" when rows is neither an array nor null (null: no rows).
 SweepPlots write_sweep_report(const nlohmann::json& rows, const std::string& out_dir,
                               const std::string& title);

@@ -1,5 +1,5 @@
-// Patch ray tracing (ALGORITHM 4, issue 13) at 512×512, one ray per pixel, one thread (the
-// thesis's Delphi programs were single-threaded): the preliminary map, each refiner from the
+// Patch ray tracing (docs/algorithms.md §4, issue 13) at 512×512, one ray per pixel, one thread
+// (the thesis's Delphi programs were single-threaded): the preliminary map, each refiner from the
 // map, and Martin et al. 2000 (BVH build, traversal) on the teapot (Bézier), the column
 // (B-spline) and the NURBS torus. docs/patches.md holds the table and the command.
 #include <benchmark/benchmark.h>

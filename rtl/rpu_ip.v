@@ -1,7 +1,7 @@
-// rpu_ip: the K-step iterative process (ALGORITHM 1.2 step 3), twin of rpu::ref::ip_process.
-// An input stage squares the guide heights once per pair (h1², h2², rpu_mul: the candidates'
-// guide radicands h² + L²w need them; no candidate multiplies h); a start unit evaluates the
-// candidates τ = 0 and τ = 1; then
+// rpu_ip: the K-step iterative process (docs/algorithms.md §1.2 step 3), twin of
+// rpu::ref::ip_process. An input stage squares the guide heights once per pair (h1², h2², rpu_mul:
+// the candidates' guide radicands h² + L²w need them; no candidate multiplies h); a start unit
+// evaluates the candidates τ = 0 and τ = 1; then
 //   Unrolled = 1: K rpu_ip_step units in a pipeline, each with its k wired in: one pair per
 //                 cycle, fixed latency, ready_o = 1;
 //   Unrolled = 0: one rpu_ip_step unit reused K times: items circulate through it, a returning

@@ -1,4 +1,4 @@
-// rpu_ip_step: one step of the iterative process (ALGORITHM 1.2 step 3), twin of
+// rpu_ip_step: one step of the iterative process (docs/algorithms.md §1.2 step 3), twin of
 // rpu::ref::ip_step. The J − 1 new candidates m_j = τ + j·2^(N − N1·k), j = 1..J−1, are
 // evaluated in parallel; with md_0 = lo.md and md_J = hi.md the pair sums sd_j = md_j + md_{j+1}
 // go through a lowest-index argmin η, and the next state is

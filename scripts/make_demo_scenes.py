@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the built-in demo scenes scenes/*.json (SCENE.md format), deterministically.
+"""Writes the built-in demo scenes scenes/*.json (docs/scene-format.md), deterministically.
 
 Run from the repository root:  python3 scripts/make_demo_scenes.py
 
@@ -373,7 +373,7 @@ def scene_airfield():
                  "from 2300 m above a point south of the field.",
         # South of the field, 2300 m up, looking down at about 50 degrees: the whole map is in
         # view. Lines are 4-12 m wide against pixels of ~7 m, so thin cross-view lines alias:
-        # there is no anti-aliasing by design (exact colours, SCENE.md).
+        # there is no anti-aliasing by design (exact colours, README "Command line").
         "camera": {"eye": [-200.0, -1900.0, 2300.0], "target": [0.0, -250.0, 0.0],
                    "up": [0.0, 0.0, 1.0], "fov_deg": 72.0, "width": 640, "height": 480},
         "background": [0.12, 0.16, 0.12],
@@ -385,7 +385,8 @@ def scene_airfield():
 # Independent checks on the written files
 
 def derive_normals(pts, closed):
-    """ALGORITHM 1, 'Normals when the input has none' (3-D points; planar curves stay planar)."""
+    """docs/algorithms.md §1, 'Normals when the input has none' (3-D points; planar curves
+    stay planar)."""
     n = len(pts)
     out = []
     for i in range(n):
@@ -424,7 +425,7 @@ def seg_seg_dist2d(p, q, r, s):
 
 
 def camera_project(cam, X):
-    """Screen coordinates (x, y) on the plane at distance 1, and depth c (ALGORITHM 1.1)."""
+    """Screen coordinates (x, y) on the screen plane, and depth c (docs/algorithms.md §1.1)."""
     h = tuple(cam["eye"])
     W = sub(tuple(cam["target"]), h)
     W = mul(W, 1 / norm(W))

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the built-in patch scenes of ALGORITHM 4 (issue 13) into scenes/:
+"""Writes the built-in patch scenes of docs/algorithms.md §4 (issue 13) into scenes/:
   teapot.json  the Newell teapot, 32 bicubic Bézier patches (public-domain data, read from
                TEAPOT.json: {"patches": [[16 points], ...]}, rows of constant u)
   column.json  a B-spline surface of revolution: a column (cubic profile x cubic closed ring)
@@ -37,8 +37,8 @@ def teapot(src):
     with open(src) as f:
         data = json.load(f)
     return {
-        "about": "The Newell teapot (1975): 32 bicubic Bézier patches, one bezier_set (ALGORITHM 4, "
-                 "seed 003; thesis table 2). Public-domain data.",
+        "about": "The Newell teapot (1975): 32 bicubic Bézier patches, one bezier_set "
+                 "(docs/algorithms.md §4, seed 003; thesis table 2). Public-domain data.",
         "camera": {"eye": [6.0, -9.0, 6.0], "target": [0.3, 0.0, 1.3], "up": [0, 0, 1],
                    "fov_deg": 33, "width": 512, "height": 512},
         "background": [0.08, 0.09, 0.12],
@@ -67,7 +67,8 @@ def column():
     pts = [[r6(r * cx), r6(r * cy), r6(z)] for (r, z) in profile for (cx, cy) in ring]
     return {
         "about": "A column: a cubic B-spline surface of revolution (profile x closed ring, "
-                 "12 x 12 control points, non-uniform knots in u) (ALGORITHM 4, thesis table 3).",
+                 "12 x 12 control points, non-uniform knots in u) (docs/algorithms.md §4, "
+                 "thesis table 3).",
         "camera": {"eye": [7.5, -10.0, 6.5], "target": [0.0, 0.0, 2.7], "up": [0, 0, 1],
                    "fov_deg": 31, "width": 512, "height": 512},
         "background": [0.08, 0.09, 0.12],
@@ -95,7 +96,8 @@ def torus():
             weights.append(r6(tw * cw))
     return {
         "about": "An exact NURBS torus (R = 2, r = 0.75), one rational biquadratic patch, 9 x 9 "
-                 "control points, weights 1, √2/2 and 1/2, tilted 30° (ALGORITHM 4, thesis table 5).",
+                 "control points, weights 1, √2/2 and 1/2, tilted 30° (docs/algorithms.md §4, "
+                 "thesis table 5).",
         "camera": {"eye": [0.0, -9.0, 5.5], "target": [0.0, 0.0, 0.0], "up": [0, 0, 1],
                    "fov_deg": 40, "width": 512, "height": 512},
         "background": [0.08, 0.09, 0.12],

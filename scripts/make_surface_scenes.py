@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the built-in surface scenes of ALGORITHM 3 (seed 004) into scenes/, deterministically.
+"""Writes the surface scenes of docs/algorithms.md §3 (seed 004) into scenes/, deterministically.
 
 Run from the repository root:  python3 scripts/make_surface_scenes.py [--preview DIR]
 
@@ -40,7 +40,7 @@ ROOT = demo.ROOT
 FILL = 0.70  # fraction of the image the single primitive spans
 SIZE = 256
 
-# The seed's parameters (SCENE.md; app default_surface_params).
+# The seed's parameters (docs/scene-format.md; default_surface_params in ref/scene/surface.cpp).
 SEED = {
     "ellipsoid": {"a": 1.0, "b": 2.0, "c": 1.0, "y_range": [-2.0, 1.0]},
     "relief_ellipsoid": {"a": 1.0, "b": 2.0, "c": 1.3, "d": 1.0, "e": 0.4, "y_range": [-2.0, 2.0]},
@@ -243,8 +243,9 @@ def scene_mix():
            polyline_samples(curve["points"], True, 0.05) + polyline_samples(loop, True, 0.05))
     cam = frame(pts, "z", 30.0, 28.0, distance_factor=2.2, fill=0.9)
     return {
-        "about": "A relief ellipsoid and a rocket (ALGORITHM 3) standing on a texture loop "
-                 "(ALGORITHM 2, z = 0), with curve12's seam (ALGORITHM 1) wound round the "
+        "about": "A relief ellipsoid and a rocket (docs/algorithms.md §3) standing on a texture "
+                 "loop (docs/algorithms.md §2, z = 0), with curve12's seam "
+                 "(docs/algorithms.md §1) wound round the "
                  "ellipsoid, in front of it and behind it: the nearest hit across "
                  "kinds decides every pixel.",
         "camera": cam,

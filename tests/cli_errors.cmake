@@ -1,6 +1,6 @@
-# CLI contract for bad input (SCENE.md, issue 11): exactly one line "rpu: error: <where>:
-# <problem>" on stderr naming the file, the JSON path and the problem, and exit status 1; never a
-# crash, never CLI11's own exit codes. Run as
+# CLI contract for bad input (docs/scene-format.md, README "Command line", issue 11): exactly one
+# line "rpu: error: <where>: <problem>" on stderr naming the file, the JSON path and the problem,
+# and exit status 1; never a crash, never CLI11's own exit codes. Run as
 #   cmake -DRPU=path/to/rpu -DBAD=tests/bad_scenes -DOUT=dir -P cli_errors.cmake
 file(MAKE_DIRECTORY ${OUT})
 set(failures 0)
@@ -57,11 +57,15 @@ expect_error("n not a multiple of n1" "--n;not a multiple of n1"
              render builtin:ellipse6 --n 16 --n1 3 -o ${OUT}/x.png)
 expect_error("n1 too large" "--n1;bits per step" config --n 18 --n1 9)
 expect_error("unknown backend" "--backend;warp" render builtin:ellipse6 --backend warp -o ${OUT}/x.png)
-# Patches (ALGORITHM 4): the fixed-point model and the RTL have no path for them; bad patch flags.
+# Patches (docs/algorithms.md §4): the fixed-point model and the RTL have no path for them; bad
+# patch flags.
 expect_error("patches on ref" "builtin:column: patches;the ref backend has no fixed-point path"
              render builtin:column --backend ref --size 16x16 -o ${OUT}/x.png)
 expect_error("patches on rtl" "builtin:column: patches;the rtl backend has no fixed-point path"
              render builtin:column --backend rtl --size 16x16 -o ${OUT}/x.png)
+# A scene with surfaces and patches: ref renders surfaces, so the patches are named.
+expect_error("surfaces and patches on ref" "surface_and_patch.json: patches;the ref backend has no fixed-point path"
+             render ${BAD}/../scenes/surface_and_patch.json --backend ref --size 16x16 -o ${OUT}/x.png)
 expect_error("unknown patch method" "--patch-method;unknown patch method 'bisection'"
              render builtin:teapot --patch-method bisection -o ${OUT}/x.png)
 expect_error("bad patch start" "--patch-start;must be map or random"

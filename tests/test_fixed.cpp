@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "test_seed.h"
 #include "fixed/fixed.h"
 
 namespace rpu::fixed {
@@ -178,7 +179,7 @@ TEST(FixedIsqrt, WideRandom) {
   const u64 seed = test_seed();
   std::printf("[isqrt random] seed %llu (set RPU_FIXED_SEED to override)\n",
               static_cast<unsigned long long>(seed));
-  std::mt19937_64 rng(seed);
+  std::mt19937_64 rng(rpu::test::seed(seed));
   Failures f;
   constexpr long kCases = 250000;
   for (long i = 0; i < kCases; ++i) {
@@ -269,7 +270,7 @@ void check_udiv(Failures& f, u128 a, u128 b, int slack, long i, u64 seed) {
 TEST(FixedUdiv, WideRandom) {
   const u64 seed = test_seed() + 1;
   std::printf("[udiv random] seed %llu\n", static_cast<unsigned long long>(seed));
-  std::mt19937_64 rng(seed);
+  std::mt19937_64 rng(rpu::test::seed(seed));
   Failures f;
   constexpr long kCases = 150000;
   for (long i = 0; i < kCases; ++i) {
@@ -290,7 +291,7 @@ TEST(FixedUdiv, WideRandom) {
 TEST(FixedUdiv, FullWidthRandom) {
   const u64 seed = test_seed() + 2;
   std::printf("[udiv full-width random] seed %llu\n", static_cast<unsigned long long>(seed));
-  std::mt19937_64 rng(seed);
+  std::mt19937_64 rng(rpu::test::seed(seed));
   Failures f;
   constexpr long kCases = 50000;
   for (long i = 0; i < kCases; ++i) {
@@ -566,7 +567,7 @@ namespace {
 // everywhere: exhaustively to 2^20 and on seeded random values of every width to 126 bits.
 TEST(FixedIsqrt, FastPathEqualsDigitByDigit) {
   for (u64 x = 0; x < (u64{1} << 20); ++x) ASSERT_EQ(isqrt(x, 20), isqrt_digits(x, 20)) << x;
-  std::mt19937_64 rng(20261121);
+  std::mt19937_64 rng(rpu::test::seed(20261121));
   for (int trial = 0; trial < 300000; ++trial) {
     const int w = 1 + static_cast<int>(rng() % 126);
     const u128 x = ((static_cast<u128>(rng()) << 64) | rng()) & max_unsigned(w);

@@ -1,5 +1,5 @@
-// Images carry exact colours (SCENE.md): the background where nothing is hit, the primitive's
-// colour otherwise, in every format.
+// Images carry exact colours (README "Command line"): the background where nothing is hit, the
+// primitive's colour otherwise, in every format.
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>

@@ -1,7 +1,7 @@
-// Ray tracing patches (ALGORITHM 4, issue 13): the refiners on known roots, the preliminary map,
-// Martin's BVH, the depth test and the silhouette rule; and every method's hit mask against the
-// tessellated triangle reference (ref/patch/tessellated_reference.h) on the built-in teapot,
-// column and NURBS torus: ≥ 99.5 % of the union of hit pixels.
+// Ray tracing patches (docs/algorithms.md §4, issue 13): the refiners on known roots, the
+// preliminary map, Martin's BVH, the depth test and the silhouette rule; and every method's hit
+// mask against the tessellated triangle reference (ref/patch/tessellated_reference.h) on the
+// built-in teapot, column and NURBS torus: ≥ 99.5 % of the union of hit pixels.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,10 +1,12 @@
-// Patch evaluation (ALGORITHM 4): derivatives against central differences, partition of unity,
-// NURBS with unit weights = B-spline, Bézier = clamped B-spline, clamped ends interpolate corners.
+// Patch evaluation (docs/algorithms.md §4): derivatives against central differences, partition of
+// unity, NURBS with unit weights = B-spline, Bézier = clamped B-spline, clamped ends interpolate
+// corners.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "test_seed.h"
 #include "patch/patch_surface.h"
 
 namespace rpu::patch {
@@ -14,7 +16,7 @@ using scene::Patch;
 using scene::PatchType;
 
 std::vector<Vec3> random_grid(int nu, int nv, unsigned seed) {
-  std::mt19937 rng(seed);
+  std::mt19937 rng(rpu::test::seed(seed));
   std::uniform_real_distribution<double> d(-2.0, 2.0);
   std::vector<Vec3> pts;
   for (int i = 0; i < nu * nv; ++i) pts.push_back({d(rng), d(rng), d(rng)});
@@ -33,7 +35,7 @@ Patch bezier(int du, int dv, unsigned seed) {
 // A clamped knot vector with `size - degree - 1` interior knots, non-uniform, on [a, b].
 std::vector<double> clamped_knots(int degree, int size, double a, double b, unsigned seed,
                                   bool repeat_interior = false) {
-  std::mt19937 rng(seed);
+  std::mt19937 rng(rpu::test::seed(seed));
   std::uniform_real_distribution<double> d(a, b);
   std::vector<double> interior;
   for (int i = 0; i < size - degree - 1; ++i) interior.push_back(d(rng));
@@ -59,7 +61,7 @@ Patch bspline(int du, int dv, int nu, int nv, unsigned seed, bool repeat_interio
 Patch nurbs(int du, int dv, int nu, int nv, unsigned seed) {
   Patch p = bspline(du, dv, nu, nv, seed);
   p.type = PatchType::kNurbs;
-  std::mt19937 rng(seed + 7);
+  std::mt19937 rng(rpu::test::seed(seed + 7));
   std::uniform_real_distribution<double> d(0.2, 3.0);
   for (int i = 0; i < nu * nv; ++i) p.weights.push_back(d(rng));
   return p;

@@ -1,5 +1,6 @@
-// Strict scene-file parsing (SCENE.md): a valid scene round-trips, defaults apply, and every
-// kind of malformed input is rejected with the source name, the exact JSON path and the problem.
+// Strict scene-file parsing (docs/scene-format.md): a valid scene round-trips, defaults apply, and
+// every kind of malformed input is rejected with the source name, the exact JSON path and the
+// problem.
 #include "scene/scene_json.h"
 
 #include <gtest/gtest.h>
@@ -285,7 +286,7 @@ std::vector<BadCase> bad_cases() {
        "out of range"},
       {"half_width_huge", mutate(R"("half_width": 0.05)", R"("half_width": 1e10)"),
        "textures[0].half_width", "out of range"},
-      // Patches (ALGORITHM 4).
+      // Patches (docs/algorithms.md §4).
       {"patches_object", with_camera(R"("patches": {})"), "patches", "expected an array of patches"},
       {"patch_no_type", with_camera(R"("patches": [{"degree": [1, 1]}])"), "patches[0]",
        "missing required key 'type'"},
@@ -343,7 +344,7 @@ std::vector<BadCase> bad_cases() {
       {"bspline_weights_key", bspline_patch(R"("size": [3, 2], "weights": [1,1,1,1,1,1])", R"([0,0,0,1,1,1])", R"([0,0,1,1])", 6),
        "patches[0].weights", "unknown key 'weights'"},
       {"patch_color", bezier_patch(R"(, "color": [0, 2, 0])"), "patches[0].color[1]", "[0, 1]"},
-      // Surfaces (ALGORITHM 3, seed 004).
+      // Surfaces (docs/algorithms.md §3, seed 004).
       {"surfaces_object", with_camera(R"("surfaces": {"type": "snail"})"), "surfaces",
        "expected an array of surfaces, got an object"},
       {"surface_not_object", with_camera(R"("surfaces": [{"type": "snail"}, 3])"), "surfaces[1]",
@@ -607,7 +608,8 @@ TEST(SceneJson, SurfacesRoundTrip) {
   EXPECT_EQ(ro.p.e, 0.7);
 }
 
-// Every parameter is optional: the seed's values (SCENE.md), y_range following the file's b.
+// Every parameter is optional: the seed's values (docs/scene-format.md), y_range following the
+// file's b.
 TEST(SceneJson, SurfaceDefaults) {
   const Scene s = parse_scene(with_camera(R"("surfaces": [{"type": "ellipsoid"},
     {"type": "relief_ellipsoid"}, {"type": "spiral"}, {"type": "snail"}, {"type": "rocket"},

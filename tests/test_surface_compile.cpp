@@ -1,6 +1,7 @@
 // compile_surface (ref/scene/surface.cpp): the placement frame (Rz·Ry·Rx after a uniform scale)
 // and the bounding sphere, checked against dense samples of each primitive's parametric surface
 // R(φ, y) / R(φ, γ) written out here from seed 004's equations 2, 3, 5, 6 and 7.
+#include "test_seed.h"
 #include "scene/surface.h"
 
 #include <gtest/gtest.h>
@@ -55,7 +56,7 @@ Vec3 snail_point(const SurfaceParams& p, double phi, double g) {
           r_axis * std::cos(phi) + r * std::cos(phi) * std::cos(g)};
 }
 
-// Eq 7 with the cone read as a·(1 − (y − b)/e) (ALGORITHM 3).
+// Eq 7 with the cone read as a·(1 − (y − b)/e) (docs/algorithms.md §3).
 Vec3 rocket_point(const SurfaceParams& p, double phi, double y) {
   double r = p.a;
   if (y <= 0.0) r = p.a + (std::sin(5.0 * phi) - 1.0) * y * p.d / p.c;
@@ -113,7 +114,7 @@ TEST(SurfaceCompile, TypeNames) {
   EXPECT_STREQ(surface_type_name(SurfaceType::kRocket), "rocket");
 }
 
-// The seed's figure captions (SCENE.md).
+// The seed's figure captions (docs/scene-format.md).
 TEST(SurfaceCompile, SeedDefaults) {
   const SurfaceParams el = default_surface_params(SurfaceType::kEllipsoid);
   EXPECT_EQ(std::vector<double>({el.a, el.b, el.c, el.y_min, el.y_max}),
@@ -185,7 +186,7 @@ Surface random_surface(SurfaceType t, std::mt19937_64& rng) {
 // wildly loose (the farthest sample reaches at least half its radius); the frame maps local to
 // world as written above and back.
 TEST(SurfaceCompile, BoundingSphereContainsTheSurface) {
-  std::mt19937_64 rng(20080610);
+  std::mt19937_64 rng(rpu::test::seed(20080610));
   for (const SurfaceType t : {SurfaceType::kEllipsoid, SurfaceType::kReliefEllipsoid,
                               SurfaceType::kSpiral, SurfaceType::kSnail, SurfaceType::kRocket}) {
     for (int trial = 0; trial < 16; ++trial) {

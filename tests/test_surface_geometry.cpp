@@ -4,6 +4,7 @@
 // ellipsoid seen through its cut, the rocket's joints, the spiral's gap and end plane, a camera
 // inside the bounding sphere and inside the surface, float-ip against float where the IP cannot
 // fail.
+#include "test_seed.h"
 #include "scene/surface_geometry.h"
 
 #include <gtest/gtest.h>
@@ -124,7 +125,7 @@ void check_normal_offsets(const SurfaceGeometry& g, int n, std::mt19937_64& rng,
 }
 
 TEST(SurfaceIndicator, ParametricPointsOffsetAlongTheNormal) {
-  std::mt19937_64 rng(2008);
+  std::mt19937_64 rng(rpu::test::seed(2008));
   for (SurfaceType t : kTypes) {
     const SurfaceGeometry seed(t, default_surface_params(t));
     check_normal_offsets(seed, 3000, rng, std::string(surface_type_name(t)) + " (seed)");
@@ -138,7 +139,7 @@ TEST(SurfaceIndicator, ParametricPointsOffsetAlongTheNormal) {
 
 TEST(SurfaceIndicator, ContinuousFormAgreesWithTheInsideTest) {
   // The gradient's F has the inside test's sign at random points of the bounding box.
-  std::mt19937_64 rng(4);
+  std::mt19937_64 rng(rpu::test::seed(4));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (SurfaceType t : kTypes) {
     const CompiledSurface cs = compile_surface(make(t), 0);
@@ -189,7 +190,7 @@ TEST(SurfaceIndicator, PointsOnTheCutPlaneTakeTheLimitFromTheirPiece) {
   // limit 0 / 2π, never −π or 3π: the same inside bit as a point a hair into the piece.
   for (SurfaceType t : {SurfaceType::kSpiral, SurfaceType::kSnail}) {
     const SurfaceGeometry g(make(t));
-    std::mt19937_64 rng(9);
+    std::mt19937_64 rng(rpu::test::seed(9));
     std::uniform_real_distribution<double> u(-3.0, 3.0);
     for (int k = 0; k < 20000; ++k) {
       const double y = t == SurfaceType::kSnail ? 0.1 * u(rng) : 2.0 * u(rng) + 2.5, z = u(rng);
@@ -230,7 +231,7 @@ TEST(SurfacePieces, SpiralCutsAtTheStartAndEndPlanes) {
   const SurfaceGeometry g(make(SurfaceType::kSpiral));
   const double alpha = g.end_azimuth();
   EXPECT_NEAR(alpha, 11.0 - kTwoPi, 1e-12);
-  std::mt19937_64 rng(5);
+  std::mt19937_64 rng(rpu::test::seed(5));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int three = 0;
   for (int k = 0; k < 2000; ++k) {
@@ -343,7 +344,7 @@ TEST(SurfaceRays, RocketJoints) {
   // At ψ = 3π/2 (sin 5ψ = −1) the fin r = a − 2yd/c reaches a + 0.01 at y = −0.01·c/(2d).
   expect_hit_at(cs, {{-(p.a + 0.01), 3, 0}, {0, -1, 0}}, 3 + 0.01 * p.c / (2 * p.d), "fin tip");
   // Horizontal rays at the joint height y = b, grazing: the chord 2√(a² − z²) is short. The
-  // ideal always sees it; the IP with 256 candidates per step too (16 would be too coarse).
+  // ideal always sees it; the IP with 256 sub-intervals per step too (16 would be too coarse).
   for (double z : {0.15, 0.19, 0.199}) {
     const double half = std::sqrt(p.a * p.a - z * z);
     expect_hit_at(cs, {{-2, p.b, z}, {1, 0, 0}}, 2 - half, "grazing the joint", 24, 8);
@@ -444,7 +445,7 @@ TEST(SurfaceRays, DenseSearchMatchesTheAnalyticEllipsoid) {
   el.p.y_min = rl.p.y_min = -2.0, el.p.y_max = rl.p.y_max = 2.0;
   rl.p.d = 1.0, rl.p.e = 0.0;
   const CompiledSurface ce = compile_surface(el, 0), cr = compile_surface(rl, 0);
-  std::mt19937_64 rng(77);
+  std::mt19937_64 rng(rpu::test::seed(77));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int hits = 0;
   for (int k = 0; k < 3000; ++k) {
@@ -465,7 +466,7 @@ TEST(SurfaceRays, IterativeEqualsIdealWhereItCannotFail) {
   // Rays from outside aimed near the middle of a closed surface cross it with a chord longer
   // than a step-1 interval (n1 ≥ 4: at most 1/16 of the bounding diameter): the IP's τ_K is the
   // crossing's final interval exactly.
-  std::mt19937_64 rng(12);
+  std::mt19937_64 rng(rpu::test::seed(12));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   struct Case {
     SurfaceType type;

@@ -1,4 +1,4 @@
-// The bit-accurate model of the vector-described surfaces (ALGORITHM 3, docs/surfaces.md;
+// The bit-accurate model of the vector-described surfaces (docs/algorithms.md §3, docs/surfaces.md;
 // formats and bounds in docs/fixed-point.md, "Surfaces"): the descriptors, the local transform,
 // the indicator unit against the double indicator away from the surface, the pieces against the
 // float tracer's, whole pairs and frames against `float-ip`, saturation and thread independence.
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "test_seed.h"
 #include "common/error.h"
 #include "image/frame.h"
 #include "model/ref_renderer.h"
@@ -195,7 +196,7 @@ TEST(Parameters, SurfaceWidthsAreValidatedNamingTheFlag) {
 // ---- local transform ----
 
 TEST(SurfaceSetup, LocalTransformWithinBound) {
-  std::mt19937_64 rng(kSeed);
+  std::mt19937_64 rng(rpu::test::seed(kSeed));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   HwParams p;
   for (SurfaceType t : kTypes) {
@@ -278,7 +279,7 @@ bool far_from_surface(const scene::SurfaceGeometry& g, const Vec3& p,
 }
 
 TEST(Indicator, AgreesWithTheFloatIndicatorAwayFromTheSurface) {
-  std::mt19937_64 rng(kSeed);
+  std::mt19937_64 rng(rpu::test::seed(kSeed));
   std::uniform_real_distribution<double> u(-1.0, 1.0), u01(0.0, 1.0);
   for (const auto& [lw, aw] : std::vector<std::pair<int, int>>{{24, 20}, {20, 16}}) {
     HwParams p;
@@ -378,7 +379,7 @@ RayCase random_ray(const scene::Surface& s, std::mt19937_64& rng, const HwParams
 }
 
 TEST(SurfaceSetup, PiecesTileTheIntervalAndMatchTheFloatPieces) {
-  std::mt19937_64 rng(kSeed + 1);
+  std::mt19937_64 rng(rpu::test::seed(kSeed + 1));
   HwParams p;
   for (SurfaceType t : kTypes)
     for (const scene::Surface& s0 : {seed_surface(t), variant_surface(t)}) {
@@ -474,7 +475,7 @@ TEST(SurfaceSetup, PiecesTileTheIntervalAndMatchTheFloatPieces) {
 }
 
 TEST(SurfaceModel, HitsAgreeWithFloatIpOnRandomRays) {
-  std::mt19937_64 rng(kSeed + 2);
+  std::mt19937_64 rng(rpu::test::seed(kSeed + 2));
   for (const auto& [n, n1] : std::vector<std::pair<int, int>>{{16, 2}, {12, 3}}) {
     HwParams p;
     p.n = n;

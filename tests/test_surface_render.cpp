@@ -1,6 +1,6 @@
-// Whole images of vector-described surfaces (ALGORITHM 3) through render_float: float-ip against
-// float on the demo scenes (scenes/surf_*.json, here at 64×64), the nearest hit across curves,
-// textures and surfaces, the statistics, and --shade's normals.
+// Whole images of vector-described surfaces (docs/algorithms.md §3) through render_float: float-ip
+// against float on the demo scenes (scenes/surf_*.json, here at 64×64), the nearest hit across
+// curves, textures and surfaces, the statistics, and --shade's normals.
 //
 // The 256×256 measurement of docs/surfaces.md (mismatched pixels per (n, n1), times) is a
 // disabled test, run by hand:
@@ -103,7 +103,7 @@ TEST(SurfaceRender, IterativeAgainstIdealOnTheDemoScenes) {
 }
 
 TEST(SurfaceRender, IterativeWithEnoughCandidatesMatchesIdeal) {
-  // 256 candidates per step over the ellipsoid and the rocket: no chord is shorter than a step-1
+  // 256 sub-intervals per step over the ellipsoid and the rocket: no chord is shorter than a step-1
   // interval except at silhouettes, so the images agree but for a few edge pixels.
   for (const char* name : {"surf_ellipsoid", "surf_rocket"}) {
     const CompiledScene sc = scene::compile_scene(demo(name, 64));

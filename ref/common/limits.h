@@ -29,8 +29,8 @@ inline constexpr double kMaxCoordinate = 1e9;
 // memory.
 inline constexpr int kMaxJsonDepth = 64;
 
-// Highest degree of a parametric patch in either direction (ALGORITHM 4; the thesis uses 3).
-// Evaluation keeps its basis functions in fixed arrays of kMaxPatchDegree + 1.
+// Highest degree of a parametric patch in either direction (docs/algorithms.md §4; the thesis uses
+// 3). Evaluation keeps its basis functions in fixed arrays of kMaxPatchDegree + 1.
 inline constexpr int kMaxPatchDegree = 10;
 
 // Largest sweep grid (configurations after expansion) and largest worker count.

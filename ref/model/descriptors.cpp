@@ -206,9 +206,10 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
   // Edge vectors E_left(i) = U − x_i·W and E_top(j) = y_j·W − V with x_i = (2i − width)·σ/2,
   // y_j = (height − 2j)·σ/2, all from one rounded half-pixel step swh = W·σ/2: the hardware's
   // el0 − i·sw is then exactly U − (2i − width)·swh, so an edge whose x_i is representable (the
-  // centre edges always) is exactly the spec's plane, and a point on it is captured by the pixel
-  // to its right / below (left and top edges inclusive). Rounding el0 and sw separately left a
-  // residual W term that moved such points one column or row over (issue 11, item 10).
+  // centre edges always) is exactly the plane of docs/algorithms.md §1.1, and a point on it is
+  // captured by the pixel to its right / below (left and top edges inclusive). Rounding el0 and
+  // sw separately left a residual W term that moved such points one column or row over (issue 11,
+  // item 10).
   const IVec3 swh = quantize_vec(cam.W * (0.5 * s), fe, "camera");
   const IVec3 u = quantize_vec(cam.U, fe, "camera"), vq = quantize_vec(cam.V, fe, "camera");
   c.el0 = {u.x + cam.width * swh.x, u.y + cam.width * swh.y, u.z + cam.width * swh.z};

@@ -66,8 +66,8 @@ struct ScaledConst {
 // limit) needs at most 8 (turns m = 0..7 in range at any azimuth).
 inline constexpr int kSurfaceTurnLanes = 8;
 
-// A vector-described surface (ALGORITHM 3, docs/surfaces.md) quantised for the surface path
-// (rpu_surface_setup, rpu_indicator, rpu_surface_ip). "llsb" is the surface's local LSB:
+// A vector-described surface (docs/algorithms.md §3, docs/surfaces.md) quantised for the surface
+// path (rpu_surface_setup, rpu_indicator, rpu_surface_ip). "llsb" is the surface's local LSB:
 // 2^local_frac llsb per local unit, local_frac chosen per surface so that its local bounding box
 // fills a quarter of the signed LW range. Formats: docs/fixed-point.md, "Surfaces".
 struct SurfaceDesc {

@@ -10,7 +10,7 @@ enum class Metric { kAbs, kSquared };  // md = |pr - s| (seed) or |pr - s|² (no
 
 struct HwParams {
   int n = 16;            // result bits of the iterative process τ
-  int n1 = 2;            // bits per step; 2^n1 + 1 candidates; K = n / n1
+  int n1 = 2;            // bits per step: 2^n1 sub-intervals (docs/algorithms.md §1.2); K = n / n1
   int coord_w = 24;      // CW: signed width of positions (scene normalised into it), LSB = 1 unit
   int dir_frac = 24;     // FV: fraction bits of the ray direction v̂ (|v̂| ≈ 1)
   int t_frac = 24;       // FT: fraction bits of the chord parameter t and of w = t(1-t)
@@ -22,7 +22,7 @@ struct HwParams {
   Metric metric = Metric::kAbs;
   bool unrolled = true;  // K step units in a pipeline (one pair per cycle), or one step unit
                          // reused K times (iterative); the results are identical
-  // Vector-described surfaces (ALGORITHM 3; docs/fixed-point.md, "Surfaces").
+  // Vector-described surfaces (docs/algorithms.md §3; docs/fixed-point.md, "Surfaces").
   int surf_w = 24;       // LW: signed width of surface-local coordinates; each surface is scaled
                          // by a power of two so that its bounding box fills a quarter of it
   int angle_w = 20;      // AW: bits of a binary angle (2^AW = one full turn) in the indicators

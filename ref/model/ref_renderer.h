@@ -1,7 +1,7 @@
 // `--backend ref`: the bit-accurate model renders a frame, all cores. The work items (pixel,
 // segment) are those the host would stream into the hardware: curve segments from the screen
 // bins, texture segments from the classification grid at the ray/plane unit's point p0, and
-// every surface (ALGORITHM 3) as up to three piece work items (rpu_surface_top.h).
+// every surface (docs/algorithms.md §3) as up to three piece work items (rpu_surface_top.h).
 #pragma once
 
 #include <cstdint>

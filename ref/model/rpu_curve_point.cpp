@@ -11,7 +11,7 @@ using fixed::truncate;
 
 WVec3 curve_point_unit(const HwParams& p, const SegmentDesc& s, i128 t, i128 g1, i128 g2) {
   const i128 one = i128{1} << p.t_frac;
-  // s(t) = p(t) + u_1·g_1·(1-t) + u_2·g_2·t  (seed 000 eq. 23 with the closed-form guides).
+  // s(t) = p(t) + u_1·g_1·(1-t) + u_2·g_2·t  (seed 000 eq 13 with the closed-form guides).
   const WVec3 pt = widen(s.p1) + scale_truncate(widen(s.d), t, p.t_frac);
   const i128 G1 = truncate(g1 * (one - t), p.t_frac);
   const i128 G2 = truncate(g2 * t, p.t_frac);

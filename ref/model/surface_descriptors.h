@@ -1,6 +1,6 @@
-// Quantisation of the vector-described surfaces (ALGORITHM 3) into SurfaceDesc (descriptors.h),
-// and the product with a block-floating-point constant the surface twins share. Formats:
-// docs/fixed-point.md, "Surfaces".
+// Quantisation of the vector-described surfaces (docs/algorithms.md §3) into SurfaceDesc
+// (descriptors.h), and the product with a block-floating-point constant the surface twins share.
+// Formats: docs/fixed-point.md, "Surfaces".
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
-// The baseline of ALGORITHM 4: Martin, Cohen, Fish, Shirley, "Practical ray tracing of trimmed
-// NURBS surfaces", Journal of Graphics Tools 5(1), 2000. Every patch is refined into Bézier
+// The baseline of docs/algorithms.md §4: Martin, Cohen, Fish, Shirley, "Practical ray tracing of
+// trimmed NURBS surfaces", Journal of Graphics Tools 5(1), 2000. Every patch is refined into Bézier
 // sub-patches (knot insertion to full multiplicity, then de Casteljau subdivision until each
 // sub-patch is flat), each sub-patch's control net bounds it (convex hull; NURBS: positive
 // weights); a bounding-volume hierarchy over the sub-patches' boxes is traversed front to back

@@ -1,4 +1,4 @@
-// Ray tracing the patches of a scene (ALGORITHM 4, seed 003) with one of three methods:
+// Ray tracing the patches of a scene (docs/algorithms.md §4, seed 003) with one of three methods:
 //   kThesis  the thesis: preliminary value map (preliminary_map.h), then per pixel the refiner
 //            of the patch's type — gradient descent for Bézier (eq 4), steepest descent with
 //            golden-ratio step for B-spline (eq 9), Newton + Cramer on the projected homogeneous

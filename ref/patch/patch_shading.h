@@ -1,6 +1,7 @@
 // Pictures of patch renderings (`rpu render --shade`): Lambert shading with the surface normal
 // S_u × S_v at the hit and a light at the eye, I = ambient + (1 − ambient)·|n·l|. Only for
-// looking at: the default images keep exact flat colours (SCENE.md) for pixel comparison.
+// looking at: the default images keep exact flat colours (README "Command line") for pixel
+// comparison.
 #pragma once
 
 #include <vector>

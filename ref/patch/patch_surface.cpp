@@ -1,5 +1,6 @@
-// Patch evaluation (ALGORITHM 4, seed 003): tensor-product Bernstein (Bézier) and B-spline bases
-// with their first derivatives, combined in homogeneous coordinates so NURBS share the code.
+// Patch evaluation (docs/algorithms.md §4, seed 003): tensor-product Bernstein (Bézier) and
+// B-spline bases with their first derivatives, combined in homogeneous coordinates so NURBS share
+// the code.
 #include "patch/patch_surface.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Evaluation of the parametric patches of ALGORITHM 4 (seed 003): Bézier (Bernstein / de
+// Evaluation of the parametric patches of docs/algorithms.md §4 (seed 003): Bézier (Bernstein / de
 // Casteljau), B-spline (de Boor) and NURBS (rational de Boor), with first derivatives. The
 // parameter domain of every patch is normalised to [0, 1]² (B-spline/NURBS knots are mapped
 // linearly from [knots[deg], knots[size]]), so the preliminary map and the refiners treat every

@@ -1,6 +1,6 @@
-// The preliminary value map of ALGORITHM 4 (seed 003, eqs 5–8): the patches rasterised once
-// (tessellated, z-buffered) into a map holding, per texel, the number of the front patch and its
-// parameters (u, v) — the start of every pixel's refinement. The thesis codes the map as an RGB
+// The preliminary value map of docs/algorithms.md §4 (seed 003, eqs 5–8): the patches rasterised
+// once (tessellated, z-buffered) into a map holding, per texel, the number of the front patch and
+// its parameters (u, v) — the start of every pixel's refinement. The thesis codes the map as an RGB
 // image: R = patch number + 1 (0: no surface, eq 5), G, B = round(255·u), round(255·v) on the
 // normalised domain (eqs 6–8). Here the patch number is an int (no 254-patch limit); u, v are
 // quantised to 8 bits as the thesis does, or kept at full precision (`quantised` false).

@@ -1,5 +1,5 @@
-// The ray turned into the z axis (ALGORITHM 4, eq 1): an orthonormal frame (e1, e2) across the
-// pixel-centre ray, so that the ray/surface hit solves S_x(u, v) = S_y(u, v) = 0 with
+// The ray turned into the z axis (docs/algorithms.md §4, eq 1): an orthonormal frame (e1, e2)
+// across the pixel-centre ray, so that the ray/surface hit solves S_x(u, v) = S_y(u, v) = 0 with
 // S_x = e1·(S − eye), S_y = e2·(S − eye). The depth of a point is c = W·(S − eye), the float
 // tracer's depth (the ray parameter of eye + c·ray_direction(i, j)).
 #pragma once

@@ -1,4 +1,4 @@
-// The refiners of ALGORITHM 4 (seed 003), eqs 4, 9 and 10–13, and plain Newton.
+// The refiners of docs/algorithms.md §4 (seed 003), eqs 4, 9 and 10–13, and plain Newton.
 #include "patch/refiners.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// The per-pixel refiners of ALGORITHM 4 (seed 003): from a start (u0, v0) on one patch, find the
-// root of S_x(u, v) = S_y(u, v) = 0 in the ray-aligned frame (eq 1; ray_frame.h).
+// The per-pixel refiners of docs/algorithms.md §4 (seed 003): from a start (u0, v0) on one patch,
+// find the root of S_x(u, v) = S_y(u, v) = 0 in the ray-aligned frame (eq 1; ray_frame.h).
 //   gradient_descent  (Bézier, eq 4):  (u, v) −= h·∇g, g = S_x² + S_y² (eq 2), h fixed per start
 //                                      (1 / the Lipschitz constant of ∇g at the start), halved
 //                                      when g would increase.

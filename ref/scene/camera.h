@@ -1,4 +1,4 @@
-// Camera constants, pixel rays and the pixel visibility pyramid (ALGORITHM 1.1).
+// Camera constants, pixel rays and the pixel visibility pyramid (docs/algorithms.md §1.1).
 #pragma once
 
 #include <string>

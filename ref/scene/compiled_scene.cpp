@@ -76,14 +76,14 @@ CompiledScene compile_scene(const Scene& scene) {
                      out.texture_segments);
   }
   out.texture_grid = ClassificationGrid::build(out.texture_segments);
-  // Surfaces (ALGORITHM 3) follow the textures; the scene reader has validated them.
+  // Surfaces (docs/algorithms.md §3) follow the textures; the scene reader has validated them.
   out.first_surface_primitive = static_cast<int>(out.primitives.size());
   for (size_t k = 0; k < scene.surfaces.size(); ++k) {
     const int id = static_cast<int>(out.primitives.size());
     out.primitives.push_back({Primitive::Kind::kSurface, static_cast<int>(k), scene.surfaces[k].color});
     out.surfaces.push_back(compile_surface(scene.surfaces[k], id));
   }
-  // Patches (ALGORITHM 4) follow the surfaces; they are traced by the float backends only.
+  // Patches (docs/algorithms.md §4) follow the surfaces; only the float backends trace them.
   out.first_patch_primitive = static_cast<int>(out.primitives.size());
   for (size_t k = 0; k < scene.patches.size(); ++k)
     out.primitives.push_back({Primitive::Kind::kPatch, static_cast<int>(k), scene.patches[k].color});

@@ -39,11 +39,11 @@ struct CompiledScene {
   std::vector<CompiledSegment> curve_segments;
   std::vector<CompiledSegment> texture_segments;
   ClassificationGrid texture_grid;  // over texture_segments
-  // Vector-described surfaces (ALGORITHM 3), primitive ids first_surface_primitive + k, in the
-  // order of scene.surfaces: frame and bounding sphere (scene/surface.h).
+  // Vector-described surfaces (docs/algorithms.md §3), primitive ids first_surface_primitive + k,
+  // in the order of scene.surfaces: frame and bounding sphere (scene/surface.h).
   std::vector<CompiledSurface> surfaces;
   int first_surface_primitive = 0;
-  // Parametric patches (ALGORITHM 4), primitive ids first_patch_primitive + k; the float
+  // Parametric patches (docs/algorithms.md §4), primitive ids first_patch_primitive + k; the float
   // backends only (ref/patch/), the fixed-point model and the RTL refuse them.
   std::vector<Patch> patches;
   int first_patch_primitive = 0;

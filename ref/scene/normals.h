@@ -1,5 +1,5 @@
-// Normals of a polyline when the scene file gives none (ALGORITHM 1, "Normals when the input
-// has none").
+// Normals of a polyline when the scene file gives none (docs/algorithms.md §1, "Normals when
+// the input has none").
 #pragma once
 
 #include <vector>

@@ -1,4 +1,5 @@
-// The scene as written in a scene file (SCENE.md), after validation, before compilation.
+// The scene as written in a scene file (docs/scene-format.md), after validation, before
+// compilation.
 #pragma once
 
 #include <array>
@@ -23,15 +24,15 @@ struct Camera {
   int height = 0;
 };
 
-// A spatial curve (ALGORITHM 1): a polyline smoothed by spherical interpolation.
+// A spatial curve (docs/algorithms.md §1): a polyline smoothed by spherical interpolation.
 struct Curve {
   std::vector<Vec3> points;
-  std::vector<Vec3> normals;  // empty when the file gives none (then derived, ALGORITHM 1)
+  std::vector<Vec3> normals;  // empty when the file gives none (derived, docs/algorithms.md §1)
   bool closed = false;
   Color color{1.0, 1.0, 1.0};
 };
 
-// A vector texture on the plane z = 0 (ALGORITHM 2). Points and normals have z = 0.
+// A vector texture on the plane z = 0 (docs/algorithms.md §2). Points and normals have z = 0.
 struct Texture {
   std::vector<Vec3> points;
   std::vector<Vec3> normals;  // empty when the file gives none
@@ -40,8 +41,8 @@ struct Texture {
   Color color{1.0, 1.0, 1.0};
 };
 
-// A parametric patch of ALGORITHM 4 (seed 003). A `bezier_set` in the file becomes one Patch per
-// member (same colour). Control points are row-major with rows of constant u index: point
+// A parametric patch of docs/algorithms.md §4 (seed 003). A `bezier_set` in the file becomes one
+// Patch per member (same colour). Control points are row-major with rows of constant u index: point
 // (iu, iv) is control_points[iu * size_v + iv].
 enum class PatchType { kBezier, kBSpline, kNurbs };
 struct Patch {
@@ -61,8 +62,8 @@ struct Scene {
   Color background{0.0, 0.0, 0.0};
   std::vector<Curve> curves;
   std::vector<Texture> textures;
-  std::vector<Surface> surfaces;  // ALGORITHM 3 (seed 004), scene/surface.h
-  std::vector<Patch> patches;  // ALGORITHM 4; float backend only (no fixed-point path)
+  std::vector<Surface> surfaces;  // docs/algorithms.md §3 (seed 004), scene/surface.h
+  std::vector<Patch> patches;  // docs/algorithms.md §4; float backend only (no fixed-point path)
 };
 
 // Largest accepted image side and pixel count: bigger requests are refused, not attempted

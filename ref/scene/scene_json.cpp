@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <initializer_list>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -16,6 +16,7 @@
 #include "common/json_input.h"
 #include "common/input_file.h"
 #include "common/limits.h"
+#include "scene/scene_keys.h"
 
 namespace rpu::scene {
 namespace {
@@ -43,8 +44,13 @@ Json parse_json(const std::string& text, const std::string& source) {
 
 using json_input::describe;
 
-// Checks that `j` is an object whose keys are all in `allowed`.
-void expect_object(const Json& j, const Where& w, std::initializer_list<std::string_view> allowed) {
+// The keys accepted at an object path of scene_keys.h; an unknown path does not compile.
+consteval std::span<const std::string_view> keys_of(std::string_view path) {
+  return accepted_keys(path);
+}
+
+// Checks that `j` is an object whose keys are all in `allowed` (keys_of).
+void expect_object(const Json& j, const Where& w, std::span<const std::string_view> allowed) {
   if (!j.is_object()) w.fail("expected an object, got " + describe(j));
   for (const auto& [k, v] : j.items()) {
     bool known = false;
@@ -121,7 +127,7 @@ int image_side(const Json& j, const Where& w) {
 }
 
 Camera camera(const Json& j, const Where& w) {
-  expect_object(j, w, {"eye", "target", "up", "fov_deg", "width", "height"});
+  expect_object(j, w, keys_of("camera"));
   Camera cam;
   cam.eye = vec(required(j, w, "eye"), w.key("eye"), 3);
   cam.target = vec(required(j, w, "target"), w.key("target"), 3);
@@ -178,14 +184,14 @@ void polyline(const Json& j, const Where& w, size_t dims, const char* kind, Poly
 }
 
 Curve curve(const Json& j, const Where& w) {
-  expect_object(j, w, {"points", "normals", "closed", "color"});
+  expect_object(j, w, keys_of("curves[*]"));
   Curve c;
   polyline(j, w, 3, "curve", c);
   return c;
 }
 
 Texture texture(const Json& j, const Where& w) {
-  expect_object(j, w, {"points", "normals", "closed", "half_width", "color"});
+  expect_object(j, w, keys_of("textures[*]"));
   Texture t;
   polyline(j, w, 2, "texture", t);
   const Json& hw = required(j, w, "half_width");
@@ -195,7 +201,7 @@ Texture texture(const Json& j, const Where& w) {
   return t;
 }
 
-// ---- patches (ALGORITHM 4) ----
+// ---- patches (docs/algorithms.md §4) ----
 
 // A whole number in [lo, hi].
 int whole_in(const Json& j, const Where& w, int lo, int hi, const char* what) {
@@ -275,14 +281,13 @@ std::vector<Patch> patch_object(const Json& j, const Where& w) {
   if (!t.is_string()) w.key("type").fail("expected a string (bezier, bspline, nurbs or bezier_set), got " + describe(t));
   const std::string type = t.get<std::string>();
   if (type == "bezier") {
-    expect_object(j, w, {"type", "degree", "control_points", "color"});
+    expect_object(j, w, keys_of("patches[*] type bezier"));
   } else if (type == "bezier_set") {
-    expect_object(j, w, {"type", "degree", "patches", "color"});
+    expect_object(j, w, keys_of("patches[*] type bezier_set"));
   } else if (type == "bspline") {
-    expect_object(j, w, {"type", "degree", "size", "knots_u", "knots_v", "control_points", "color"});
+    expect_object(j, w, keys_of("patches[*] type bspline"));
   } else if (type == "nurbs") {
-    expect_object(j, w,
-                  {"type", "degree", "size", "knots_u", "knots_v", "control_points", "weights", "color"});
+    expect_object(j, w, keys_of("patches[*] type nurbs"));
   } else {
     w.key("type").fail("unknown patch type " + t.dump() + "; expected bezier, bspline, nurbs or bezier_set");
   }
@@ -355,13 +360,13 @@ std::vector<Patch> patches(const Json& j, const Where& w) {
   return out;
 }
 
-// ---- surfaces (ALGORITHM 3, seed 004; docs/surfaces.md) ----
+// ---- surfaces (docs/algorithms.md §3, seed 004; docs/surfaces.md) ----
 
 // Smallest accepted size parameter and scale: below it the local frame's 1/scale and the
 // indicators' (x/a)² leave the range the coordinate limit is meant to keep (limits.h).
 constexpr double kMinSurfaceSize = 1e-9;
 
-// The hardware's phi_max limit: 8 turns (ALGORITHM 3, the spiral and snail turn counter).
+// The hardware's phi_max limit: 8 turns (docs/algorithms.md §3, the spiral and snail turn counter).
 constexpr double kMaxSurfaceTurns = 8.0;
 
 // A surface parameter: a finite number with |v| <= limits::kMaxCoordinate.
@@ -399,21 +404,19 @@ Surface surface(const Json& j, const Where& w) {
   const SurfaceType type = surface_type(j, w);
   switch (type) {
     case SurfaceType::kEllipsoid:
-      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "b", "c", "y_range"});
+      expect_object(j, w, keys_of("surfaces[*] type ellipsoid"));
       break;
     case SurfaceType::kReliefEllipsoid:
-      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "b", "c", "d",
-                           "e", "y_range"});
+      expect_object(j, w, keys_of("surfaces[*] type relief_ellipsoid"));
       break;
     case SurfaceType::kSpiral:
-      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "R", "k", "a",
-                           "b", "c", "phi_max"});
+      expect_object(j, w, keys_of("surfaces[*] type spiral"));
       break;
     case SurfaceType::kSnail:
-      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "phi_max"});
+      expect_object(j, w, keys_of("surfaces[*] type snail"));
       break;
     case SurfaceType::kRocket:
-      expect_object(j, w, {"type", "position", "rotation_deg", "scale", "color", "a", "b", "c", "d", "e"});
+      expect_object(j, w, keys_of("surfaces[*] type rocket"));
       break;
   }
   Surface s;
@@ -461,7 +464,7 @@ Surface surface(const Json& j, const Where& w) {
                           kMaxSurfaceTurns, v->dump()));
   };
   const auto y_range = [&] {
-    // Default: the type's range in units of b (SCENE.md), for the b read above.
+    // Default: the type's range in units of b (docs/scene-format.md), for the b read above.
     p.y_min = -p.b;
     p.y_max = type == SurfaceType::kEllipsoid ? 0.5 * p.b : p.b;
     const Json* v = find_key(j, "y_range");
@@ -545,8 +548,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   const Where top{source, ""};
   if (!j.is_object())
     top.fail("expected a JSON object at the top level, got " + describe(j));
-  expect_object(j, top,
-                {"about", "camera", "background", "curves", "textures", "surfaces", "patches"});
+  expect_object(j, top, keys_of("top level"));
 
   Scene scene;
   scene.source = source;

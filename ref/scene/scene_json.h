@@ -1,4 +1,4 @@
-// Reading and strictly validating scene files (SCENE.md).
+// Reading and strictly validating scene files (docs/scene-format.md).
 #pragma once
 
 #include <string>

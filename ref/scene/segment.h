@@ -1,4 +1,5 @@
-// Per-segment constants of spherical interpolation (ALGORITHM 1) and the curve point s(t).
+// Per-segment constants and the curve point s(t) of spherical interpolation (docs/algorithms.md
+// §1).
 #pragma once
 
 #include <optional>
@@ -9,7 +10,7 @@
 namespace rpu::scene {
 
 // One end's guide: the offset of the curve from the chord is u * g(t) with
-// g(t) = sqrt(h² + L²·t·(1-t)) - h (closed form of ALGORITHM 1). `straight` means the
+// g(t) = sqrt(h² + L²·t·(1-t)) - h (closed form of docs/algorithms.md §1). `straight` means the
 // reference sphere's centre is at infinity (n_k·d ≈ 0) and g ≡ 0.
 struct Guide {
   Vec3 u;             // u_k = vo_k / |vo_k|, unit, perpendicular to d
@@ -58,7 +59,7 @@ std::optional<Segment> make_segment(const Vec3& p1, const Vec3& p2, const Vec3& 
 // square root is clamped at 0 so that t slightly outside [0, 1] (rounding) never yields NaN.
 double guide_offset(const Guide& g, double L2, double t);
 
-// s(t) = p(t) + s_11(t)·(1 - t) + s_21(t)·t with s_k1(t) = u_k·g_k(t)  (seed 000, eq. 23).
+// s(t) = p(t) + s_11(t)·(1 - t) + s_21(t)·t with s_k1(t) = u_k·g_k(t)  (seed 000, eq 13).
 Vec3 curve_point(const Segment& s, double t);
 
 // ds/dt, with g_k'(t) = L²(1 - 2t) / (2·sqrt(h² + L²t(1-t))).

@@ -1,5 +1,5 @@
-// Vector-described surfaces of ALGORITHM 3 (seed 004, Dodonov, Gusiatin, Semikin 2008): the
-// primitive as written in a scene file, and its compiled form (local frame, bounding sphere).
+// Vector-described surfaces of docs/algorithms.md §3 (seed 004, Dodonov, Gusiatin, Semikin 2008):
+// the primitive as written in a scene file, and its compiled form (local frame, bounding sphere).
 // The indicators, ranges and pieces are in surface_geometry.h; docs/surfaces.md has the math.
 #pragma once
 
@@ -16,7 +16,8 @@ enum class SurfaceType { kEllipsoid, kReliefEllipsoid, kSpiral, kSnail, kRocket 
 const char* surface_type_name(SurfaceType t);
 
 // The seed's parameters, in the primitive's own local frame (y is the axis). Every parameter is
-// optional in the file; the defaults are the seed's (SCENE.md). A type uses only its own subset:
+// optional in the file; the defaults are the seed's (docs/scene-format.md). A type uses only
+// its own subset:
 //   ellipsoid         a b c y_min y_max            (eq 2; default y_range [-b, 0.5 b])
 //   relief_ellipsoid  a b c d e y_min y_max        (eq 3; default y_range [-b, b])
 //   spiral            R k a b c phi_max            (eq 5)
@@ -29,7 +30,7 @@ struct SurfaceParams {
   double y_min = -2.0, y_max = 1.0;
 };
 
-// The seed's defaults of a type (SCENE.md): y_range follows b as written there.
+// The seed's defaults of a type (docs/scene-format.md): y_range follows b as written there.
 SurfaceParams default_surface_params(SurfaceType t);
 
 struct Surface {

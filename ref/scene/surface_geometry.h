@@ -1,8 +1,9 @@
-// The local geometry of a vector-described surface (ALGORITHM 3, seed 004, docs/surfaces.md):
-// the exact inside test (the indicator the search evaluates), its continuous form for normals,
-// the pieces a ray's search interval is cut into at the parameter-range boundaries, and the
-// seed's parametric form R(φ, ·) (eqs 2, 3, 5, 6, 7), used by the tests. Double precision, for
-// the float backends (`float`, `float-ip`); every function works in the primitive's local frame.
+// The local geometry of a vector-described surface (docs/algorithms.md §3, seed 004,
+// docs/surfaces.md): the exact inside test (the indicator the search evaluates), its continuous
+// form for normals, the pieces a ray's search interval is cut into at the parameter-range
+// boundaries, and the seed's parametric form R(φ, ·) (eqs 2, 3, 5, 6, 7), used by the tests. Double
+// precision, for the float backends (`float`, `float-ip`); every function works in the primitive's
+// local frame.
 #pragma once
 
 #include <array>

@@ -1,9 +1,11 @@
 // The double-precision ray tracer: the yardstick for the fixed-point model and the RTL.
 //   kIdeal     (`--backend float`):    per segment, the curve point of closest approach to the
 //                                      pixel-centre ray by a global search, then the PVP capture.
-//   kIterative (`--backend float-ip`): the seeds' iterative process (ALGORITHM 1.2) exactly.
-// Vector textures (ALGORITHM 2) have no iteration and render the same in both methods.
-// Vector-described surfaces (ALGORITHM 3) are traced by tracer/surface_tracer.h in both methods.
+//   kIterative (`--backend float-ip`): the seeds' iterative process exactly (docs/algorithms.md
+//                                      §1.2).
+// Vector textures (docs/algorithms.md §2) have no iteration and render the same in both methods.
+// Vector-described surfaces (docs/algorithms.md §3) are traced by tracer/surface_tracer.h in both
+// methods.
 #pragma once
 
 #include <cstdint>
@@ -24,8 +26,9 @@ struct FloatOptions {
   int threads = 0;       // 0 = all hardware threads
 };
 
-// Largest n1: 2^n1 candidates are evaluated in parallel per step, 256 is already far beyond
-// what an FPGA datapath would replicate.
+// Largest n1: a step divides its interval into 2^n1 sub-intervals and evaluates 2^n1 − 1 new
+// candidates in parallel (docs/algorithms.md §1.2); 256 is already far beyond what an FPGA
+// datapath would replicate.
 inline constexpr int kMaxN1 = 8;
 
 // Validates n and n1 (1 ≤ n1 ≤ kMaxN1, n1 ≤ n ≤ 52, n a multiple of n1); throws rpu::Error naming the flag.
@@ -53,9 +56,9 @@ struct PairResult {
   Vec3 point;          // the test point s(t)
 };
 
-// The interpolation sphere test pred_1 and the search interval (ALGORITHM 1.2 steps 1–2): the
-// roots t1 ≤ t2 of ray/sphere, t1 clamped to 0 when the eye is inside. False when the ray misses
-// the sphere or meets it only behind the eye.
+// The interpolation sphere test pred_1 and the search interval (docs/algorithms.md §1.2 steps 1–2):
+// the roots t1 ≤ t2 of ray/sphere, t1 clamped to 0 when the eye is inside. False when the ray
+// misses the sphere or meets it only behind the eye.
 bool interpolation_interval(const Vec3& eye, const Vec3& v, const scene::Segment& s, double& t1,
                             double& t2);
 
@@ -71,7 +74,7 @@ PairResult ideal_pair(const scene::CameraFrame& cam, const scene::Segment& s, in
 // interpolation sphere (so no point of its curve can be captured).
 bool pvp_may_meet_sphere(const scene::CameraFrame& cam, const scene::Segment& s, int i, int j);
 
-// Texture predicates pr1 ∧ (pr2 ∨ pr3) of ALGORITHM 2 for the plane point p0.
+// Texture predicates pr1 ∧ (pr2 ∨ pr3) of docs/algorithms.md §2 for the plane point p0.
 bool texture_covers(const scene::CompiledSegment& s, const Vec3& p0);
 
 }  // namespace rpu::tracer

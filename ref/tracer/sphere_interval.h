@@ -1,5 +1,5 @@
 // The ray/sphere interval both float tracers search (curves: the interpolation sphere,
-// ALGORITHM 1.2 steps 1–2; surfaces: the bounding sphere, docs/surfaces.md).
+// docs/algorithms.md §1.2 steps 1–2; surfaces: the bounding sphere, docs/surfaces.md).
 #pragma once
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // shading with the normal of the indicator's continuous form (central differences in the local
 // frame, taken to world by the rotation, faced toward the eye) and a light at the eye,
 // I = ambient + (1 − ambient)·(n·l). Only for looking at: the default images keep exact flat
-// colours (SCENE.md) for pixel comparison.
+// colours (README "Command line") for pixel comparison.
 #pragma once
 
 #include <vector>

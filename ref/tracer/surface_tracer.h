@@ -1,7 +1,8 @@
-// Ray tracing vector-described surfaces (ALGORITHM 3, docs/surfaces.md) in double precision:
-// per pixel-centre ray and surface, the bounding-sphere interval, its pieces, then per piece
-//   kIterative (`float-ip`): the sign search of the indicator, 2^n1 + 1 candidates per step,
-//                            K = n / n1 steps, exactly as the contract says;
+// Ray tracing vector-described surfaces (docs/algorithms.md §3, docs/surfaces.md) in double
+// precision: per pixel-centre ray and surface, the bounding-sphere interval, its pieces, then
+// per piece
+//   kIterative (`float-ip`): the sign search of the indicator, 2^n1 sub-intervals per step,
+//                            K = n / n1 steps, exactly as docs/algorithms.md §3 says;
 //   kIdeal     (`float`):    the first crossing of the surface — the ellipsoid analytically, the
 //                            others by dense sampling of the indicator plus bisection.
 // The nearest hit over the pieces and the surfaces wins (equal depth: lower primitive id).
