@@ -1,7 +1,8 @@
 # One fuzz CTest (fuzz/CMakeLists.txt): FUZZER, MODE (smoke | regressions), CORPUS, REGRESSIONS,
-# WORK (a directory of the build tree), DICT (optional).
-#   smoke:       WORK/corpus = a fresh copy of CORPUS, then 60 s of fuzzing on it (the repository
-#                is never written); crash files land in WORK.
+# WORK (a directory of the build tree), DICT (optional), SEED and RUNS (smoke).
+#   smoke:       WORK/corpus = a fresh copy of CORPUS, then RUNS inputs of libFuzzer from SEED on
+#                it (the repository is never written); crash files land in WORK. The environment
+#                variables RPU_FUZZ_SEED and RPU_FUZZ_RUNS override SEED and RUNS.
 #   regressions: every file of CORPUS and REGRESSIONS run once.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -10,8 +11,20 @@ if(DICT)
   set(dict_arg -dict=${DICT})
 endif()
 if(MODE STREQUAL "smoke")
+  if(DEFINED ENV{RPU_FUZZ_SEED})
+    set(SEED $ENV{RPU_FUZZ_SEED})
+  endif()
+  if(DEFINED ENV{RPU_FUZZ_RUNS})
+    set(RUNS $ENV{RPU_FUZZ_RUNS})
+  endif()
+  if(NOT SEED MATCHES "^[1-9][0-9]*$" OR NOT RUNS MATCHES "^[1-9][0-9]*$")
+    message(FATAL_ERROR "seed '${SEED}' and runs '${RUNS}' must be positive whole numbers")
+  endif()
+  message(STATUS "libFuzzer seed ${SEED}, ${RUNS} runs (override: RPU_FUZZ_SEED, RPU_FUZZ_RUNS)")
   file(COPY ${CORPUS}/ DESTINATION ${WORK}/corpus)
-  execute_process(COMMAND ${FUZZER} -max_total_time=60 -timeout=10 -rss_limit_mb=2048
+  # One input may take up to 60 s before it counts as a hang: a loaded CI machine must not turn a
+  # slow input into a finding (scripts/fuzz.sh keeps libFuzzer's usual 10 s).
+  execute_process(COMMAND ${FUZZER} -seed=${SEED} -runs=${RUNS} -timeout=60 -rss_limit_mb=2048
                           -print_final_stats=1 ${dict_arg} -artifact_prefix=${WORK}/ ${WORK}/corpus
                   WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc)
 elseif(MODE STREQUAL "regressions")

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The fuzzing step of CI (issue 14, item 3; docs/verification.md "Fuzzing"): builds the libFuzzer
 # targets with clang (ASan, UBSan, RPU_FUZZ=ON, RelWithDebInfo) into build-fuzz/ — only the fuzz
-# targets and what they link — and runs the CTests labelled `fuzz`: for each target a 60 s smoke
-# run on a copy of its corpus and a run of its corpus and fuzz/regressions/<target>/ once.
+# targets and what they link — and runs the CTests labelled `fuzz`: for each target a smoke run
+# of a fixed libFuzzer seed and run count (about 60 s; RPU_FUZZ_SEED / RPU_FUZZ_RUNS override) on
+# a copy of its corpus, and a run of its corpus and fuzz/regressions/<target>/ once.
 # Prints the time taken; the exit status is CTest's.
 set -euo pipefail
 if [[ $# -ne 0 ]]; then
