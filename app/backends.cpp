@@ -69,14 +69,16 @@ nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch:
 BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
                           const BackendOptions& o) {
   BackendResult r;
-  if (!backend_applies(backend, sc) && !sc.surfaces.empty())
-    throw Error(sc.source + ": surfaces",
-                "the " + backend + " backend has no RTL path yet for vector-described surfaces "
-                "(ALGORITHM 3); render them with --backend float, float-ip or ref");
-  if (!backend_applies(backend, sc))
+  // Patches first: they have no fixed-point path at all, so they are the problem whenever a
+  // scene holds both (ref renders surfaces).
+  if (!backend_applies(backend, sc) && !sc.patches.empty())
     throw Error(sc.source + ": patches",
                 "the " + backend + " backend has no fixed-point path for parametric patches "
-                "(ALGORITHM 4); render them with --backend float or float-ip");
+                "(docs/algorithms.md §4); render them with --backend float or float-ip");
+  if (!backend_applies(backend, sc))
+    throw Error(sc.source + ": surfaces",
+                "the " + backend + " backend has no RTL path yet for vector-described surfaces "
+                "(docs/algorithms.md §3); render them with --backend float, float-ip or ref");
   r.render.name = backend;
   const auto t0 = std::chrono::steady_clock::now();
   if (backend == "float" || backend == "float-ip") {

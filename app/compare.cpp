@@ -37,7 +37,8 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   bool rtl_ok = false, rtl_ran = false;
   nlohmann::json not_applicable = nlohmann::json::array(), patch_stats;
   for (const std::string& b : backend_names()) {
-    if (!backend_applies(b, sc)) {  // patches: float only (ALGORITHM 4); surfaces: no RTL yet
+    // Patches: float only (docs/algorithms.md §4); surfaces: no RTL yet.
+    if (!backend_applies(b, sc)) {
       not_applicable.push_back(b);
       if (!o.quiet)
         std::cerr << fmt::format("  {:<8} not applicable ({})\n", b,
@@ -87,13 +88,18 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   const bool rtl_differs = rtl_ran && !(rtl_ok && s.rtl_equals_ref);
   if (!s.warning.empty()) std::cerr << fmt::format("rpu: warning: {}: {}\n", scene_arg, s.warning);
   if (!o.quiet) {
-    std::cerr << fmt::format("{}: {}x{}, rtl vs ref {} px, ref vs float-ip {} px, ref vs float "
-                             "{} px, float-ip vs float {} px\n",
+    // A comparison that did not run (a backend not applicable, or --no-rtl) is "n/a".
+    const auto count = [&](const char* key) {
+      const nlohmann::json v = s.metrics.value(key, nlohmann::json());
+      return v.is_null() ? std::string("n/a") : v.dump() + " px";
+    };
+    std::cerr << fmt::format("{}: {}x{}, rtl vs ref {}, ref vs float-ip {}, ref vs float {}, "
+                             "float-ip vs float {}\n",
                              scene_arg, scene.camera.width, scene.camera.height,
-                             s.metrics.value("rtl_vs_ref_mismatched_pixels", nlohmann::json()).dump(),
-                             s.metrics["ref_vs_float_ip_mismatched_pixels"].dump(),
-                             s.metrics["ref_vs_float_mismatched_pixels"].dump(),
-                             s.metrics["float_ip_vs_float_mismatched_pixels"].dump());
+                             count("rtl_vs_ref_mismatched_pixels"),
+                             count("ref_vs_float_ip_mismatched_pixels"),
+                             count("ref_vs_float_mismatched_pixels"),
+                             count("float_ip_vs_float_mismatched_pixels"));
     for (const auto& line : in.mismatch_lines) std::cerr << line << "\n";
     std::cerr << fmt::format("{}: report {}\n",
                              !sc.patches.empty() ? "PATCHES (float backends only, ref/rtl not applicable)"

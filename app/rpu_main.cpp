@@ -1,4 +1,4 @@
-// rpu: the command line of the ray-processing-unit model (SCENE.md, "Command line").
+// rpu: the command line of the ray-processing-unit model (README, "Command line").
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -54,7 +54,7 @@ struct CommonFlags {
   std::string trace_pixel;   // X,Y
   std::string trace_out = "trace.fst";
   std::string rtl_fault;
-  std::string patch_method = "thesis";  // ALGORITHM 4: thesis | martin | newton
+  std::string patch_method = "thesis";  // docs/algorithms.md §4: thesis | martin | newton
   std::string patch_map_size;           // WxH of the preliminary map ("" = the image's)
   bool patch_map_full = false;          // full-precision map parameters instead of 8 bits
   std::string patch_start = "map";      // map | random (eq 3, Bézier patches)
@@ -64,7 +64,7 @@ struct CommonFlags {
   void add_to(CLI::App& app) {
     app.add_option("--n", hw.n, "result bits of the iterative process (K = n/n1 steps)")
         ->capture_default_str();
-    app.add_option("--n1", hw.n1, "bits resolved per step (2^n1 candidates per step)")
+    app.add_option("--n1", hw.n1, "bits resolved per step: 2^n1 sub-intervals, 2^n1 + 1 candidate points")
         ->capture_default_str();
     app.add_option("--coord-w", hw.coord_w, "signed width of positions (LSB = 1 unit)")
         ->capture_default_str();
@@ -256,6 +256,12 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   if (same_file(scene_arg, output))
     throw Error(output, "is the scene file being rendered; refusing to overwrite the input");
   const scene::CompiledScene sc = scene::compile_scene(flags.load(scene_arg));
+  if (shade && backend != "float" && backend != "float-ip")
+    throw Error("--shade", "applies to --backend float and float-ip only; the " + backend +
+                               " image holds exact colours");
+  if (shade && sc.surfaces.empty() && sc.patches.empty())
+    throw Error("--shade", "changes nothing: " + scene_arg + " has no surfaces or patches "
+                           "(curves and textures are drawn in exact colours)");
   const app::BackendResult r = app::run_backend(backend, sc, bo);
   const image::Frame& frame = r.render.frame;
   std::vector<scene::Color> colors;
@@ -312,6 +318,15 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   return 0;
 }
 
+// Flags that a subcommand accepts (they are shared) but that change nothing there are refused
+// with one line naming the flag: `rpu config` prints the parameter set and renders nothing, and
+// `rpu demo` runs every scene, where one pixel's waveform or an injected fault mean nothing.
+void refuse_flags(const CLI::App& cmd, std::initializer_list<const char*> names,
+                  const std::string& why) {
+  for (const char* name : names)
+    if (cmd.count(name) > 0) throw Error(name, "does not apply to rpu " + cmd.get_name() + ": " + why);
+}
+
 int print_config(const CommonFlags& flags) {
   flags.validate();
   const ref::HwParams p = flags.params();
@@ -326,15 +341,18 @@ int print_config(const CommonFlags& flags) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"rpu: model of an FPGA ray-processing unit for curves smoothed by spherical "
-               "interpolation and vector textures"};
+  CLI::App app{"rpu: model of an FPGA ray-processing unit for analytically described primitives: "
+               "spatial curves smoothed by spherical interpolation and vector textures (float, "
+               "float-ip, the bit-accurate model ref and the Verilated RTL), vector-described "
+               "surfaces (float, float-ip, ref) and Bezier/B-spline/NURBS patches (float, "
+               "float-ip). Scene files: docs/scene-format.md"};
   app.require_subcommand(1);
   CommonFlags flags;
 
   auto* render_cmd = app.add_subcommand("render", "render one image");
   std::string scene_arg, backend = "float", output;
   bool quiet = false;
-  render_cmd->add_option("scene", scene_arg, "scene file (JSON, SCENE.md) or builtin:NAME")
+  render_cmd->add_option("scene", scene_arg, "scene file (JSON, docs/scene-format.md) or builtin:NAME")
       ->required();
   render_cmd->add_option("--backend,-b", backend, "float | float-ip | ref | rtl")
       ->capture_default_str();
@@ -412,13 +430,22 @@ int main(int argc, char** argv) {
   }
   try {
     if (render_cmd->parsed()) return render(scene_arg, backend, output, flags, quiet, shade);
-    if (config_cmd->parsed()) return print_config(flags);
+    if (config_cmd->parsed()) {
+      refuse_flags(*config_cmd,
+                   {"--size", "--max-side", "--systemc", "--trace-pixel", "--trace-out",
+                    "--rtl-fault", "--patch-method", "--patch-map-size", "--patch-map-full",
+                    "--patch-start", "--patch-tolerance", "--patch-iterations"},
+                   "it prints the parameter set and renders nothing");
+      return print_config(flags);
+    }
     if (compare_cmd->parsed()) {
       compare.backends = flags.backend_options();
       if (!compare_scene.starts_with("builtin:")) compare.input_file = compare_scene;
       return app::run_compare(compare_scene, flags.load(compare_scene), compare);
     }
     if (demo_cmd->parsed()) {
+      refuse_flags(*demo_cmd, {"--trace-pixel", "--trace-out", "--rtl-fault"},
+                   "it compares every built-in scene; use rpu render or rpu compare on one scene");
       demo.compare.backends = flags.backend_options();
       demo.load = [&](const std::string& arg) { return flags.load(arg); };
       return app::run_demo(demo);

@@ -109,7 +109,7 @@ int merge_results(const SweepSpec& s, const std::vector<SweepConfig>& configs,
   }
   write_text_file(out_dir / "results.csv", csv);
   write_text_file(out_dir / "results.json", dump_json(rows, 2) + "\n");
-  const SweepPlots plots = write_sweep_report(rows, out_dir.string(), "rpu sweep: " + s.path);
+  const SweepPlots plots = write_sweep_report(rows, out_dir.string(), s.path);
   std::cerr << fmt::format("rpu sweep: {} configurations, {} failed, {} not run; Pareto front: {}\n"
                            "rpu sweep: wrote {}\n", rows.size(), failed, missing,
                            plots.pareto_ids.size(), (out_dir / "index.html").string());

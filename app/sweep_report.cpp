@@ -609,7 +609,7 @@ td.error { font-family: monospace; white-space: pre-wrap; }
 )";
 
 std::string index_html(const std::vector<const json*>& rows, const std::vector<Candidate>& front,
-                       const std::string& title) {
+                       const std::vector<std::string_view>& plotted, const std::string& title) {
   std::map<std::string, size_t> by_status;
   for (const json* row : rows) ++by_status[row->is_object() ? text(*row, "status") : "malformed"];
   std::string counts = fmt::format("{} ok, {} failed, {} invalid", by_status["ok"],
@@ -625,7 +625,10 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
       "<a href=\"results.csv\">results.csv</a> and <a href=\"results.json\">results.json</a>.</p>\n",
       escape_html(title), kStyle, rows.size(), escape_html(counts));
 
-  html += "<h2>Plots</h2>\n<div class=\"gallery\">\n";
+  html += "<h2>Plots</h2>\n";
+  if (plotted.empty())
+    html += "<p>Nothing to plot: no ok configuration has a measurement.</p>\n";
+  html += "<div class=\"gallery\">\n";
   const std::pair<std::string_view, std::string_view> plots[] = {
       {kAccuracyVsLutsSvg,
        "Accuracy against area: mismatched pixels of ref vs float over all scenes against LUTs, "
@@ -636,11 +639,16 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
       {kMismatchesVsCoordWSvg,
        "Mismatched pixels against coord_w, ref vs float and ref vs float-ip, one line per (n, n1) "
        "(and per value of any other parameter the sweep varies)."}};
-  for (const auto& [file, caption] : plots)
+  for (const auto& [file, caption] : plots) {
+    if (std::find(plotted.begin(), plotted.end(), file) == plotted.end()) continue;
     html += fmt::format("<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{0}\"></a>"
                         "<figcaption>{1}</figcaption></figure>\n",
                         escape_html(file), escape_html(caption));
+  }
   html += "</div>\n";
+  if (!plotted.empty() && plotted.size() < std::size(plots))
+    html += "<p>Plots without data are left out (resources need Yosys, latency a co-simulated "
+            "sample).</p>\n";
 
   html += "<h2>Pareto front</h2>\n<p>The ok configurations no other dominates: none has at most "
           "as many LUTs and at most as many mismatched pixels (ref vs float), and fewer of one. "
@@ -676,10 +684,26 @@ SweepPlots write_sweep_report(const nlohmann::json& rows, const std::string& out
     write_text_file(path, text);
     plots.files.push_back(path.string());
   };
-  write(kAccuracyVsLutsSvg, svg_figure(accuracy_vs_luts(list, front, title)));
-  write(kLutsLatencyVsN1Svg, svg_figure(luts_latency_vs_n1(list, title)));
-  write(kMismatchesVsCoordWSvg, svg_figure(mismatches_vs_coord_w(list, title)));
-  write(kSweepIndexHtml, index_html(list, front, title));
+  // A figure is written only with data: its empty panels are dropped, and a figure left with no
+  // panel is not written (a sweep without Yosys has no LUTs), and its file from an earlier run
+  // into this directory is removed, so index.html never shows an empty or stale plot.
+  std::vector<std::string_view> plotted;
+  const auto plot = [&](std::string_view name, Figure figure) {
+    std::erase_if(figure.panels, [](const Panel& p) {
+      return std::all_of(p.series.begin(), p.series.end(),
+                         [](const Series& s) { return s.points.empty(); });
+    });
+    if (figure.panels.empty()) {
+      fs::remove(dir / name, ec);
+      return;
+    }
+    write(name, svg_figure(figure));
+    plotted.push_back(name);
+  };
+  plot(kAccuracyVsLutsSvg, accuracy_vs_luts(list, front, title));
+  plot(kLutsLatencyVsN1Svg, luts_latency_vs_n1(list, title));
+  plot(kMismatchesVsCoordWSvg, mismatches_vs_coord_w(list, title));
+  write(kSweepIndexHtml, index_html(list, front, plotted, title));
   return plots;
 }
 

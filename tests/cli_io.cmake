@@ -177,6 +177,45 @@ elseif(MODE STREQUAL "compare")
   file(READ ${OUT}/bound/report.html html)
   expect("report.html: warning banner" "html MATCHES \"banner warn\"")
   run("ref vs float-ip within the bound: no warning" 0 "" -- ${RPU} compare builtin:curve12 --no-rtl --max-side 64 -q --out ${OUT}/bound_ok)
+elseif(MODE STREQUAL "flags")
+  # Flags that do not apply are refused with one line naming the flag (issue 20, item 4).
+  set(img ${OUT}/f.png)
+  run("--shade with ref" 1 "rpu: error: --shade: applies to --backend float and float-ip only"
+      -- ${RPU} render builtin:surf_rocket --backend ref --size 8x8 --shade -o ${img})
+  run("--shade with rtl" 1 "rpu: error: --shade: applies to --backend float and float-ip only"
+      -- ${RPU} render builtin:curve12 --backend rtl --size 8x8 --shade -o ${img})
+  run("--shade without surfaces or patches" 1
+      "rpu: error: --shade: changes nothing: builtin:curve12 has no surfaces or patches"
+      -- ${RPU} render builtin:curve12 --size 8x8 --shade -o ${img})
+  run("--shade on surfaces, float" 0 "" -- ${RPU} render builtin:surf_rocket --size 8x8 --shade -q -o ${img})
+  foreach(flag "--size;8x8" "--max-side;8" "--trace-pixel;1,1" "--trace-out;t.fst" "--systemc"
+               "--rtl-fault" "--patch-method;martin" "--patch-map-size;8x8" "--patch-map-full"
+               "--patch-start;random" "--patch-tolerance;0.5" "--patch-iterations;9")
+    list(GET flag 0 name)
+    run("config ${name}" 1 "rpu: error: ${name}: does not apply to rpu config: it prints the parameter set"
+        -- ${RPU} config ${flag})
+  endforeach()
+  run("config with hardware flags" 0 "" -- ${RPU} config --n 12 --n1 3 --threads 2 --no-binning)
+  foreach(flag "--trace-pixel;1,1" "--trace-out;t.fst" "--rtl-fault" "--rtl-fault=far-hit")
+    list(GET flag 0 name)
+    string(REGEX REPLACE "=.*" "" name "${name}")
+    run("demo ${name}" 1 "rpu: error: ${name}: does not apply to rpu demo: it compares every built-in scene"
+        -- ${RPU} demo --no-rtl --out ${OUT}/demo ${flag})
+  endforeach()
+  expect("a refused demo wrote nothing" "NOT EXISTS ${OUT}/demo")
+  # Lossy image formats cannot hold the exact colours.
+  foreach(ext jpg JPEG webp gif hdr)
+    run("-o x.${ext}" 1 "rpu: error: ${OUT}/x.${ext}: .* cannot hold the image's exact colours"
+        -- ${RPU} render builtin:curve12 --size 8x8 -o ${OUT}/x.${ext})
+  endforeach()
+  foreach(ext png exr ppm tif)
+    run("-o x.${ext}" 0 "" -- ${RPU} render builtin:curve12 --size 8x8 -q -o ${OUT}/x.${ext})
+  endforeach()
+  # A comparison that did not run says n/a, never null.
+  run("compare --no-rtl: rtl vs ref n/a" 0 "rtl vs ref n/a, ref vs float-ip [0-9]+ px"
+      -- ${RPU} compare builtin:polyline9 --no-rtl --max-side 16 --out ${OUT}/cmp)
+  run("compare of a patch scene: n/a" 0 "rtl vs ref n/a, ref vs float-ip n/a, ref vs float n/a, float-ip vs float [0-9]+ px"
+      -- ${RPU} compare builtin:torus --no-rtl --max-side 16 --out ${OUT}/cmp_patch)
 elseif(MODE STREQUAL "scale")
   # Item 2: a million empty objects (3 MB) parse in linear time (the test's TIMEOUT bounds it).
   string(REPEAT "{}," 999999 objects)

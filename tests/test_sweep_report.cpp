@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "report_text.h"
 #include "sweep_report.h"
 
 namespace rpu::app {
@@ -257,27 +258,53 @@ TEST(SweepReport, OneLinePerNWhenOnlyNAndN1Vary) {
   EXPECT_EQ(count_of(widths, "<polyline"), 0u);
 }
 
-TEST(SweepReport, EmptySweepWritesNoDataPlots) {
+TEST(SweepReport, EmptySweepWritesNoPlots) {
   for (const json& rows : {json::array(), json()}) {
     const fs::path dir = fresh_dir(rows.is_null() ? "null" : "empty");
     SweepPlots plots;
     ASSERT_NO_THROW(plots = write_sweep_report(rows, dir.string(), "nothing"));
     EXPECT_TRUE(plots.pareto_ids.empty());
-    EXPECT_EQ(plots.files.size(), 4u);
-    for (const char* file : {"accuracy_vs_luts.svg", "luts_latency_vs_n1.svg", "mismatches_vs_coord_w.svg"}) {
-      const std::string svg = read_text(dir / file);
-      EXPECT_EQ(svg_problem(svg), "") << file;
-      EXPECT_NE(svg.find("no data"), std::string::npos) << file;
-      EXPECT_EQ(count_of(svg, "<circle"), 0u) << file;
-    }
+    EXPECT_EQ(plots.files.size(), 1u);  // index.html only
+    for (const char* file : {"accuracy_vs_luts.svg", "luts_latency_vs_n1.svg", "mismatches_vs_coord_w.svg"})
+      EXPECT_FALSE(fs::exists(dir / file)) << file;
     const std::string html = read_text(dir / "index.html");
     EXPECT_NE(html.find("0 configurations"), std::string::npos);
     EXPECT_NE(html.find("no front"), std::string::npos);
+    EXPECT_NE(html.find("Nothing to plot"), std::string::npos);
+    EXPECT_EQ(html.find(".svg"), std::string::npos);
   }
   // Only failed rows: nothing to plot either.
   const fs::path dir = fresh_dir("failed_only");
   write_sweep_report(json::array({failed_row("f", "failed", 16, 4, "boom")}), dir.string(), "x");
-  EXPECT_NE(read_text(dir / "accuracy_vs_luts.svg").find("no data"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "accuracy_vs_luts.svg"));
+}
+
+// A sweep without Yosys (no "lut" in any row): the LUT plot is left out, the LUT panel of the n1
+// plot too, and a plot left from an earlier run with Yosys in the same directory is removed. The
+// page title names the sweep once.
+TEST(SweepReport, PlotsWithoutDataAreLeftOut) {
+  json rows = json::array();
+  for (int n1 : {1, 2, 4}) {
+    json row = ok_row(config_id(16, n1), 16, n1, 16, 100 * n1, 10 - n1, 9 - n1, 20 + n1);
+    row.erase("lut");
+    rows.push_back(row);
+  }
+  const fs::path dir = fresh_dir("no_yosys");
+  fs::create_directories(dir);
+  write_text_file(dir / "accuracy_vs_luts.svg", "<svg>stale</svg>\n");
+  const SweepPlots plots = write_sweep_report(rows, dir.string(), "sweeps/no_yosys.json");
+  EXPECT_EQ(plots.files.size(), 3u);
+  EXPECT_FALSE(fs::exists(dir / "accuracy_vs_luts.svg"));
+  const std::string n1 = read_text(dir / "luts_latency_vs_n1.svg");
+  EXPECT_EQ(svg_problem(n1), "");
+  EXPECT_EQ(n1.find("LUTs against n1"), std::string::npos);
+  EXPECT_NE(n1.find("latency against n1"), std::string::npos);
+  EXPECT_EQ(n1.find("no data"), std::string::npos);
+  const std::string html = read_text(dir / "index.html");
+  EXPECT_EQ(html.find("accuracy_vs_luts.svg"), std::string::npos);
+  EXPECT_NE(html.find("src=\"luts_latency_vs_n1.svg\""), std::string::npos);
+  EXPECT_NE(html.find("<title>rpu sweep: sweeps/no_yosys.json</title>"), std::string::npos);
+  EXPECT_EQ(html.find("rpu sweep: rpu sweep"), std::string::npos);
 }
 
 TEST(SweepReport, SinglePointAndEqualValuesHaveFiniteAxes) {

@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -16,7 +17,23 @@ namespace rpu::image {
 namespace {
 
 bool is_float_format(const std::string& ext) {
-  return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
+  return ext == ".exr" || ext == ".pfm";
+}
+
+// Images carry exact colours (a pixel is its primitive's colour or the background), so a format
+// that cannot hold them exactly is refused before any work is done: the JPEG family, WebP,
+// HEIF/AVIF and JPEG 2000 (lossy compression), GIF (a 256-colour palette, dithered) and Radiance
+// HDR (RGBE: an 8-bit mantissa per channel under a shared exponent).
+void check_lossless_format(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  static constexpr std::string_view kLossy[] = {".jpg", ".jpeg", ".jpe", ".jfif", ".jif", ".webp",
+                                                ".heic", ".heif", ".avif", ".jp2", ".j2k", ".j2c",
+                                                ".jpx", ".gif", ".hdr", ".rgbe"};
+  if (std::find(std::begin(kLossy), std::end(kLossy), ext) != std::end(kLossy))
+    throw Error(path, ext + " cannot hold the image's exact colours (a lossy format); use .png, "
+                      ".exr, .ppm or .tif");
 }
 
 std::unique_ptr<OIIO::ImageOutput> create_output(const std::string& path) {
@@ -39,12 +56,14 @@ std::string one_line(std::string text) {
 void check_writable(const std::string& path) {
   // Where first (a device or directory says so), then the format (the file name's extension).
   check_output_path(path, "image");
+  check_lossless_format(path);
   create_output(path);
 }
 
 void write_image_file(const std::string& path, const OIIO::ImageSpec& spec,
                       OIIO::TypeDesc data_type, const void* data) {
   check_output_path(path, "image");
+  check_lossless_format(path);
   auto out = create_output(path);
   const auto failed = [&](std::string_view step) {
     throw Error(path, "cannot write image (" + std::string(step) +

@@ -9,7 +9,8 @@
 namespace rpu::image {
 
 // Writes a linear RGB float image. The format follows the extension (anything OpenImageIO
-// writes: .png, .exr, .ppm, .tif, ...). Float formats (.exr, .tif with float, .hdr) receive the
+// writes losslessly: .png, .exr, .ppm, .tif, ...; lossy formats, .jpg, .webp, .gif, .hdr and the
+// like, are refused because images carry exact colours). Float formats (.exr, .pfm) receive the
 // values unchanged; 8-bit formats receive round(255·v) of v clamped to [0, 1] — no gamma, so a
 // colour c written to png reads back as round(255·c). Throws rpu::Error naming the file.
 // Written as write_image_file says: no partial file on failure.
@@ -23,9 +24,9 @@ void write_rgb(const std::string& path, int width, int height, const std::vector
 void write_image_file(const std::string& path, const OIIO::ImageSpec& spec,
                       OIIO::TypeDesc data_type, const void* data);
 
-// Checks, before any work is done, that `path` has a format OpenImageIO can write and can become
-// a regular file (common/output_file.h: its directory exists and is writable; not a directory, device
-// or FIFO). Throws rpu::Error naming the file.
+// Checks, before any work is done, that `path` has a lossless format OpenImageIO can write and
+// can become a regular file (common/output_file.h: its directory exists and is writable; not a
+// directory, device or FIFO). Throws rpu::Error naming the file.
 void check_writable(const std::string& path);
 
 // Reads any image OpenImageIO can read as float RGB (for tests and comparisons).
