@@ -35,7 +35,7 @@ elseif(MODE STREQUAL "regressions")
     message(FATAL_ERROR "no inputs in ${CORPUS} or ${REGRESSIONS}")
   endif()
   message(STATUS "running ${count} inputs once")
-  execute_process(COMMAND ${FUZZER} -timeout=10 -rss_limit_mb=2048 -artifact_prefix=${WORK}/ ${inputs}
+  execute_process(COMMAND ${FUZZER} -seed=${SEED} -timeout=60 -rss_limit_mb=2048 -artifact_prefix=${WORK}/ ${inputs}
                   WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc)
 else()
   message(FATAL_ERROR "MODE must be smoke or regressions, got '${MODE}'")
