@@ -196,6 +196,10 @@ elseif(MODE STREQUAL "flags")
         -- ${RPU} config ${flag})
   endforeach()
   run("config with hardware flags" 0 "" -- ${RPU} config --n 12 --n1 3 --threads 2 --no-binning)
+  # The candidate count is stated one way (docs/algorithms.md §1.2).
+  execute_process(COMMAND ${RPU} config --n 12 --n1 3 OUTPUT_VARIABLE cfg)
+  expect("config: 8 sub-intervals, 9 candidate points, 7 new"
+         "cfg MATCHES \"per step   = 8 sub-intervals, 9 candidate points \\\\(7 new after the first step\\\\)\"")
   foreach(flag "--trace-pixel;1,1" "--trace-out;t.fst" "--rtl-fault" "--rtl-fault=far-hit")
     list(GET flag 0 name)
     string(REGEX REPLACE "=.*" "" name "${name}")

@@ -51,11 +51,11 @@ void HwParams::validate() const {
 
 std::string HwParams::describe() const {
   return fmt::format(
-      "n          = {}\nn1         = {}\nK          = {}\ncandidates = {} per step ({} new after "
-      "the first)\ncoord_w    = {}\ndir_frac   = {}\nt_frac     = {}\nunit_frac  = {}\n"
+      "n          = {}\nn1         = {}\nK          = {}\nper step   = {} sub-intervals, {} candidate "
+      "points ({} new after the first step)\ncoord_w    = {}\ndir_frac   = {}\nt_frac     = {}\nunit_frac  = {}\n"
       "edge_frac  = {}\ninv_w      = {}\nsqrt_w     = {}\nmetric     = {}\nip         = {}\n"
       "surf_w     = {}\nangle_w    = {}\n",
-      n, n1, K(), J() + 1, J() - 1, coord_w, dir_frac, t_frac, unit_frac, edge_frac, inv_w,
+      n, n1, K(), J(), J() + 1, J() - 1, coord_w, dir_frac, t_frac, unit_frac, edge_frac, inv_w,
       sqrt_w == 0 ? std::string("exact (no pre-shift)") : std::to_string(sqrt_w),
       metric == Metric::kAbs ? "abs" : "squared",
       unrolled ? "unrolled (K step units, one pair per cycle)" : "iterative (one step unit, K passes)",
