@@ -3,13 +3,16 @@
 1920x1080 on a few FPGA parts, from measured inputs. A PROJECTION: the clock is Yosys' static
 timing estimate of cell delays (no placement, no routing), the area a synthesis estimate.
 
-Every input below names where it was measured; rerun after a change of the design and paste the
-output into docs/throughput.md:
+Every input below names where it was measured; the area and the clock are read from the first
+table of docs/resources.md. Rerun after a change of the design and paste the output into
+docs/throughput.md:
 
     python3 scripts/throughput_projection.py > /tmp/t.md
 """
 
 import math
+import pathlib
+import re
 
 # Work items (ray/segment pairs) per 1920x1080 frame: `rpu render builtin:S --backend ref
 # --size 1920x1080` ("ray/segment pairs"); equal to the co-simulation's item count (curve12 at
@@ -21,29 +24,56 @@ PAIRS_1080P = {
     "airfield": 580_678,
 }
 
-# Slowest register-to-register path of the modules in each form, Yosys `sta` with the -specify
-# cell library (docs/resources.md): rpu_ip_step (3.98 ns) after the products became rpu_mul
-# pipelines; every other module is at 3.57-3.91 ns. The iterative rpu_ip reuses the same step
-# unit (k at run time) and was not re-measured whole. Rule of thumb from issue 10: 3.0 ns of cell
-# delay is about 200 MHz after routing, i.e. routing adds about 2/3.
+# The clock: the slowest register-to-register path of the modules (the rpu_top rows' sta ns in
+# docs/resources.md, Yosys `sta` with the -specify cell library). Rule of thumb from issue 10:
+# 3.0 ns of cell delay is about 200 MHz after routing, i.e. routing adds about 2/3.
 ROUTING_FACTOR = 5.0 / 3.0
 
-# One unit of each form at the defaults (n = 16, n1 = 2, coord_w 24): LUT sites = logic LUT +
-# INV + SRL + LUTRAM; items per cycle measured by the co-simulation (docs/cosim.md, docs/rtl.md).
-FORMS = {
-    "unrolled": {
-        # Estimate from the flattened per-module rows of docs/resources.md (8 rpu_ip_step, 2 start
-        # candidates, the rest once); the hierarchical synthesis of the whole top did not finish.
-        "lut_sites": 157_000, "ff": 216_000, "dsp": 1_940, "bram36": 82,
-        "items_per_cycle": 1.0, "sta_ns": 3.98, "source": "estimate",
-    },
-    "iterative": {
-        # Hierarchical synthesis of rpu_top Unrolled=0 at the defaults (docs/resources.md):
-        # 34,084 LUT + 3,597 INV + 46,124 SRL + 64 LUTRAM.
-        "lut_sites": 83_869, "ff": 191_736, "dsp": 616, "bram36": 127,
-        "items_per_cycle": 0.124, "sta_ns": 3.98, "source": "synthesis",
-    },
-}
+# One unit of each form at the defaults (n = 16, n1 = 2, coord_w 24): the rpu_top rows of the
+# first table of docs/resources.md (LUT sites, FF, DSP48E1, BRAM36, source, sta ns), read from
+# there so that the figures have one home; items per cycle measured by the co-simulation
+# (docs/rtl.md: one per cycle unrolled, 1/K = 0.124 iterative).
+ITEMS_PER_CYCLE = {"unrolled": 1.0, "iterative": 0.124}
+
+
+def number(cell):
+    """The first number of a table cell ('**263,349**', '≤ 3.98 (modules)', '7.5')."""
+    m = re.search(r"\d[\d,]*(?:\.\d+)?", cell)
+    if not m:
+        raise ValueError(f"no number in table cell '{cell}'")
+    v = m.group(0).replace(",", "")
+    return float(v) if "." in v else int(v)
+
+
+def read_forms(resources):
+    """The rpu_top rows of the first table of docs/resources.md ("## The current design")."""
+    text = resources.read_text(encoding="utf-8")
+    section = text.split("## The current design", 1)[1].split("\n## ", 1)[0]
+    header, forms = None, {}
+    for line in section.splitlines():
+        if not line.startswith("|"):
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if header is None:
+            header = cells
+            continue
+        row = dict(zip(header, cells))
+        if row.get("Module", "").replace("*", "") != "rpu_top":
+            continue
+        form = "unrolled" if "unrolled" in row["Configuration"] else "iterative"
+        forms[form] = {
+            "lut_sites": number(row["LUT sites"]), "ff": number(row["FF"]),
+            "dsp": number(row["DSP48E1"]), "bram36": number(row["BRAM36"]),
+            "items_per_cycle": ITEMS_PER_CYCLE[form], "sta_ns": number(row["sta ns"]),
+            "source": "estimate" if "estimate" in row["Source"] else "synthesis",
+        }
+    for form in ITEMS_PER_CYCLE:
+        if form not in forms:
+            raise SystemExit(f"{resources}: no rpu_top row for the {form} form in the first table")
+    return {f: forms[f] for f in ITEMS_PER_CYCLE}
+
+
+FORMS = read_forms(pathlib.Path(__file__).resolve().parent.parent / "docs" / "resources.md")
 
 # Device capacities (AMD/Xilinx data sheets DS180 for 7-series, DS890 for UltraScale).
 PARTS = [
@@ -90,7 +120,7 @@ def main():
     print("Frames per second at 1920×1080 (routed clock, all units of the part working on one "
           "frame; 0 where no unit fits):")
     print()
-    header = "| scene | pairs per frame | " + " | ".join(
+    header = "| scene (frames/s) | pairs per frame | " + " | ".join(
         f"{p[0]} {n}" for n, f in FORMS.items() if f["lut_sites"] for p in PARTS) + " |"
     print(header)
     print("|---|---|" + "---|" * (header.count("|") - 3))
