@@ -5,12 +5,11 @@
 # direction LSBs for the compiler to accept the view). Both then take 3,500 synthetic cameras
 # (random edge vectors over the port range, directions within the header's preconditions, and
 # v·v = k² − 1).
-set(RPU_RAY_GEN_SOURCES ${RPU_RTL_DIR}/rpu_ray_gen.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_mul.v
-                        ${RPU_RTL_DIR}/rpu_div.v)
 rpu_verilated_test(tb_rpu_ray_gen TOP rpu_ray_gen TB tb/tb_rpu_ray_gen.cpp
-                   SOURCES ${RPU_RAY_GEN_SOURCES} PARAMS -GTagW=12
+                   PARAMS -GTagW=12
                    DEFS DIR_FRAC=24 EDGE_FRAC=16 IDX_W=14 TAG_W=12 RAYGEN_FULL=1
                         RPU_SCENE_DIR="${PROJECT_SOURCE_DIR}/scenes")
 rpu_verilated_test(tb_rpu_ray_gen_fv12_fe12 EXTRA TOP rpu_ray_gen TB tb/tb_rpu_ray_gen.cpp
-                   SOURCES ${RPU_RAY_GEN_SOURCES} PARAMS -GDirFrac=12 -GEdgeFrac=12
-                   DEFS DIR_FRAC=12 EDGE_FRAC=12 IDX_W=14 RPU_SCENE_DIR="${PROJECT_SOURCE_DIR}/scenes")
+                   PARAMS -GDirFrac=12 -GEdgeFrac=12
+                   DEFS DIR_FRAC=12 EDGE_FRAC=12 IDX_W=14
+                        RPU_SCENE_DIR="${PROJECT_SOURCE_DIR}/scenes")

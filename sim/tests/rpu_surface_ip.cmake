@@ -6,16 +6,12 @@
 # three pass units, steps of 7 candidates); the iterative form at the defaults is in
 # tb_rpu_surface_top. Opt-in (-DRPU_SIM_EXTRA=ON): the iterative form at n = 8, n1 = 1 (a pass
 # unit with an idle lane in the steps).
-set(RPU_SURFACE_IP_ONLY_SOURCES
-    ${RPU_RTL_DIR}/rpu_surface_ip.v ${RPU_RTL_DIR}/rpu_surface_ip_step.v
-    ${RPU_RTL_DIR}/rpu_indicator.v ${RPU_RTL_DIR}/rpu_indicator_add3.v
-    ${RPU_RTL_DIR}/rpu_indicator_delay.v ${RPU_RTL_DIR}/rpu_cordic.v ${RPU_RTL_DIR}/rpu_mul.v)
-rpu_verilated_test(tb_rpu_surface_ip_unrolled_lw18 EXTRA TOP rpu_surface_ip TB tb/tb_rpu_surface_ip.cpp
-                   SOURCES ${RPU_SURFACE_IP_ONLY_SOURCES}
+rpu_verilated_test(tb_rpu_surface_ip_unrolled_lw18 EXTRA TOP rpu_surface_ip
+                   TB tb/tb_rpu_surface_ip.cpp
                    PARAMS -GUnrolled=1 -GSurfW=18 -GAngleW=14 -GTurns=6 -GN=6 -GN1=3 -GCtxW=24
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" UNROLLED=1 SURF_W=18 ANGLE_W=14
                         TURNS=6 IP_N=6 IP_N1=3 CTX_W=24)
 rpu_verilated_test(tb_rpu_surface_ip_iter_n8_n1_1 EXTRA TOP rpu_surface_ip
-                   TB tb/tb_rpu_surface_ip.cpp SOURCES ${RPU_SURFACE_IP_ONLY_SOURCES}
+                   TB tb/tb_rpu_surface_ip.cpp
                    PARAMS -GUnrolled=0 -GN=8 -GN1=1 -GCtxW=24
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" UNROLLED=0 IP_N=8 IP_N1=1 CTX_W=24)

@@ -2,17 +2,11 @@
 # bounding spheres, eyes inside them, rays along the range planes, other end angles; every piece
 # index), at the defaults and, opt-in, at CW 20 / LW 32 / AW 16 (world and local piece products
 # of different latencies, a 4-tile end-plane product).
-set(RPU_SURFACE_SETUP_SOURCES
-    ${RPU_RTL_DIR}/rpu_surface_setup.v ${RPU_RTL_DIR}/rpu_sphere.v ${RPU_RTL_DIR}/rpu_chord.v
-    ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_mul.v ${RPU_RTL_DIR}/rpu_div.v
-    ${RPU_RTL_DIR}/rpu_fifo.v)
 rpu_verilated_test(tb_rpu_surface_setup TOP rpu_surface_setup TB tb/tb_rpu_surface_setup.cpp
-                   SOURCES ${RPU_SURFACE_SETUP_SOURCES}
                    PARAMS -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8)
 rpu_verilated_test(tb_rpu_surface_setup_cw20_lw32 EXTRA TOP rpu_surface_setup
                    TB tb/tb_rpu_surface_setup.cpp
-                   SOURCES ${RPU_SURFACE_SETUP_SOURCES}
                    PARAMS -GCoordW=20 -GDirFrac=20 -GTFrac=20 -GSurfW=32 -GAngleW=16 -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8 COORD_W=20 DIR_FRAC=20
                         T_FRAC=20 SURF_W=32 ANGLE_W=16)

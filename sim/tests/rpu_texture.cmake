@@ -5,26 +5,21 @@
 # real pixels, segments from the classification grid around p0 and at random, plus descriptor
 # edges and exact comparison boundaries. Opt-in extras: a narrow ray/plane set, the texture unit
 # with pre-shifted guide roots (SqrtW 40; CoordW 16 with SqrtW 32 and a 3-bit tag).
-set(RPU_RAY_PLANE_RTL ${RPU_RTL_DIR}/rpu_ray_plane.v ${RPU_RTL_DIR}/rpu_div.v
-    ${RPU_RTL_DIR}/rpu_mul.v)
 rpu_verilated_test(tb_rpu_ray_plane TOP rpu_ray_plane TB tb/tb_rpu_ray_plane.cpp
-                   SOURCES ${RPU_RAY_PLANE_RTL} PARAMS -GTagW=8
+                   PARAMS -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8)
-rpu_verilated_test(tb_rpu_ray_plane_cw16_fv12 EXTRA TOP rpu_ray_plane TB tb/tb_rpu_ray_plane.cpp
-                   SOURCES ${RPU_RAY_PLANE_RTL} PARAMS -GCoordW=16 -GDirFrac=12 -GEdgeFrac=12
+rpu_verilated_test(tb_rpu_ray_plane_cw16_fv12 EXTRA TOP rpu_ray_plane
+                   TB tb/tb_rpu_ray_plane.cpp
+                   PARAMS -GCoordW=16 -GDirFrac=12 -GEdgeFrac=12
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" COORD_W=16 DIR_FRAC=12
                         EDGE_FRAC=12)
-set(RPU_TEXTURE_RTL ${RPU_RTL_DIR}/rpu_texture.v ${RPU_RTL_DIR}/rpu_chord.v
-    ${RPU_RTL_DIR}/rpu_guide_pair.v ${RPU_RTL_DIR}/rpu_sqrt.v ${RPU_RTL_DIR}/rpu_curve_point.v
-    ${RPU_RTL_DIR}/rpu_mul.v)
 rpu_verilated_test(tb_rpu_texture TOP rpu_texture TB tb/tb_rpu_texture.cpp
-                   SOURCES ${RPU_TEXTURE_RTL} PARAMS -GTagW=8
+                   PARAMS -GTagW=8
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=8)
 rpu_verilated_test(tb_rpu_texture_s40 EXTRA TOP rpu_texture TB tb/tb_rpu_texture.cpp
-                   SOURCES ${RPU_TEXTURE_RTL} PARAMS -GSqrtW=40
+                   PARAMS -GSqrtW=40
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" SQRT_W=40)
 rpu_verilated_test(tb_rpu_texture_cw16_s32 EXTRA TOP rpu_texture TB tb/tb_rpu_texture.cpp
-                   SOURCES ${RPU_TEXTURE_RTL}
                    PARAMS -GCoordW=16 -GTFrac=20 -GUnitFrac=12 -GInvW=16 -GSqrtW=32 -GTagW=3
                    DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" COORD_W=16 T_FRAC=20
                         UNIT_FRAC=12 INV_W=16 SQRT_W=32 TAG_W=3)
