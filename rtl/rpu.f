@@ -10,43 +10,44 @@
 // Lines: a source file, +incdir+DIR (where `include finds the headers), a header as a
 // "// header: FILE" comment (included, never compiled on its own), or a // comment.
 
-+incdir+.
++incdir+common
++incdir+surface
 
 // common: the shared arithmetic blocks
-rpu_fifo.v
-rpu_mul.v
-// header: rpu_mul_latency.vh
-rpu_sqrt.v
-rpu_div.v
-rpu_cordic.v
+common/rpu_fifo.v
+common/rpu_mul.v
+// header: common/rpu_mul_latency.vh
+common/rpu_sqrt.v
+common/rpu_div.v
+common/rpu_cordic.v
 
 // curve: the curve path (sphere, K-step IP process, capture)
-rpu_chord.v
-rpu_sphere.v
-rpu_guide_pair.v
-rpu_curve_point.v
-rpu_candidate.v
-rpu_ip_step.v
-rpu_ip.v
-rpu_capture.v
+curve/rpu_chord.v
+curve/rpu_sphere.v
+curve/rpu_guide_pair.v
+curve/rpu_curve_point.v
+curve/rpu_candidate.v
+curve/rpu_ip_step.v
+curve/rpu_ip.v
+curve/rpu_capture.v
 
 // texture: the texture path
-rpu_ray_plane.v
-rpu_texture.v
+texture/rpu_ray_plane.v
+texture/rpu_texture.v
 
 // surface: the vector-described surfaces
-rpu_indicator.v
-rpu_indicator_add3.v
-rpu_indicator_delay.v
-rpu_surface_setup.v
-rpu_surface_ip.v
-rpu_surface_ip_step.v
-rpu_surface_top.v
-rpu_surface_admit.v
-// header: rpu_surface_desc.vh
-// header: rpu_surface_latency.vh
+surface/rpu_indicator.v
+surface/rpu_indicator_add3.v
+surface/rpu_indicator_delay.v
+surface/rpu_surface_setup.v
+surface/rpu_surface_ip.v
+surface/rpu_surface_ip_step.v
+surface/rpu_surface_top.v
+surface/rpu_surface_admit.v
+// header: surface/rpu_surface_desc.vh
+// header: surface/rpu_surface_latency.vh
 
 // top: ray generation, the pixel resolve, the top level
-rpu_ray_gen.v
-rpu_resolve.v
-rpu_top.v
+top/rpu_ray_gen.v
+top/rpu_resolve.v
+top/rpu_top.v

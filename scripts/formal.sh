@@ -69,7 +69,7 @@ declare -A spec=(
   [fifo_bug_stale]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
 )
 
-# Deliberate faults (sed expressions on a copy of rtl/rpu_fifo.v):
+# Deliberate faults (sed expressions on a copy of rtl/common/rpu_fifo.v):
 #   fifo_bug_full:  wr_ready_o always 1: a write while full overwrites the oldest entry.
 #   fifo_bug_stale: the output register loads only when taken, not when empty: an entry
 #                   arriving at an empty FIFO is announced with the previous entry's data.
