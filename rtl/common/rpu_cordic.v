@@ -1,5 +1,5 @@
 // rpu_cordic: pipelined CORDIC, twin rpu::ref::cordic_vectoring / cordic_rotation
-// (ref/model/rpu_cordic.h; formats and error bounds: docs/fixed-point.md, "CORDIC").
+// (ref/model/common/rpu_cordic.h; formats and error bounds: docs/fixed-point.md, "CORDIC").
 //   Mode 0, vectoring: (x_i, y_i) → x_o = |(x, y)| (unsigned), angle_o = atan2(y, x) as an
 //                      AW-bit binary angle in [0, 2^AW) (2^AW = one turn); atan2(0, 0) = 0;
 //                      y_o = 0.

@@ -1,6 +1,6 @@
 // rpu_fifo: a first-word-fall-through FIFO whose storage has a registered (synchronous) read, so
 // that Yosys maps it into block RAM (RAMB18/36) instead of LUT RAM, and whose output comes
-// straight from that read register. Twin: rpu::ref::Fifo (ref/model/rpu_fifo.h), a plain queue.
+// straight from that read register. Twin: rpu::ref::Fifo (ref/model/common/rpu_fifo.h), a plain queue.
 //
 // Storage: 2^Log2Depth entries plus the output register (capacity 2^Log2Depth + 1). An entry
 // written at cycle c is in the memory after edge c; the memory is read into the output register

@@ -1,6 +1,6 @@
 // rpu_indicator: the inside bit of one point in a surface's local frame, for every primitive type,
 // twin of `rpu::ref::indicator_unit(params, surface, l, x_negative, last_turn, ovf, trace)`
-// (ref/model/rpu_indicator.h; the indicators: docs/surfaces.md; formats: docs/fixed-point.md,
+// (ref/model/surface/rpu_indicator.h; the indicators: docs/surfaces.md; formats: docs/fixed-point.md,
 // "Surfaces"). One configurable unit: `type_i` selects the primitive per point, so one pipeline
 // serves a scene that mixes them; the spiral's and snail's turns m = 0 .. Lanes−1 are parallel
 // lanes. Every type takes the same number of cycles (the longest, the relief's).

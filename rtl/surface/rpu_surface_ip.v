@@ -1,5 +1,5 @@
 // rpu_surface_ip: the K-step sign search of one surface piece (docs/surfaces.md, "The iterative
-// process on a piece"), twin of rpu::ref::surface_ip (ref/model/rpu_surface_ip.{h,cpp}). The
+// process on a piece"), twin of rpu::ref::surface_ip (ref/model/surface/rpu_surface_ip.{h,cpp}). The
 // search runs as K + 1 passes of rpu_surface_ip_step: pass 0 evaluates the ends τ = 0 and τ = 1,
 // pass k = 1..K the J − 1 new candidates of step k and the first sign change; a step 1 without
 // one is a miss.

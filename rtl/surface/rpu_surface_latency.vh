@@ -1,11 +1,11 @@
 // Latencies of the surface IP's parts as constant functions, included (after rpu_mul_latency.vh)
 // inside rpu_surface_ip_step, rpu_surface_ip and rpu_surface_top, which need them at elaboration:
 // the iterative IP's ring period and the top's admission both are one pass's latency.
-// rpu_surface_indicator_latency mirrors rtl/rpu_indicator.v's schedule (its localparams LF, LB,
+// rpu_surface_indicator_latency mirrors rtl/surface/rpu_indicator.v's schedule (its localparams LF, LB,
 // LatencyOwn and rpu_cordic's Latency) and ref::indicator_latency; rpu_surface_ip_step checks it
 // against the instance in simulation (the lane-0 indicator's valid_o must come exactly that many
 // cycles after its valid_i), so a change of the indicator's schedule stops the first simulation.
-// The C++ side of every formula: ref/model/rpu_surface_latency.cpp.
+// The C++ side of every formula: ref/model/surface/rpu_surface_latency.cpp.
 /* verilator lint_off VARHIDDEN */
 function integer rpu_surface_max(input integer a, input integer b);
   rpu_surface_max = a > b ? a : b;

@@ -1,5 +1,5 @@
 // rpu_surface_setup: the surface setup unit, twin of `rpu::ref::surface_setup(p, eye, v̂, s, piece)`
-// (ref/model/rpu_surface_setup.{h,cpp}; formats: docs/fixed-point.md, "Surfaces"; the contract:
+// (ref/model/surface/rpu_surface_setup.{h,cpp}; formats: docs/fixed-point.md, "Surfaces"; the contract:
 // docs/surfaces.md, "Ranges"). One work item is (pixel ray, surface, piece index):
 //   sphere      pred1, A, B = rpu_sphere on the bounding sphere (c0, R²), d = 0 (α = β = 0)
 //   la, lb      floor(M·(X − origin)·2^-s) for X = A, B: exact products (rpu_mul), one

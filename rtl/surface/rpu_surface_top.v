@@ -1,5 +1,5 @@
 // rpu_surface_top: one surface work item (pixel ray, surface, piece) through the surface path,
-// twin of rpu::ref::process_surface_piece (ref/model/rpu_surface_top.{h,cpp}):
+// twin of rpu::ref::process_surface_piece (ref/model/surface/rpu_surface_top.{h,cpp}):
 //   rpu_surface_setup   bounding sphere, local frame, the requested piece (A', B' − A' in world
 //                       LSB, lA', lB' − lA' in llsb, the azimuth branch)
 //   rpu_surface_ip      the sign search on the piece: hit, τ_K
