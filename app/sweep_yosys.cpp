@@ -20,9 +20,25 @@ using nlohmann::json;
 
 namespace {
 
+// The file of an RTL module: the entry of the RTL file list rtl/rpu.f named after it (one module
+// per file, rtl/README.md).
+fs::path module_file(const std::string& module) {
+  const fs::path rtl = fs::path(RPU_SOURCE_DIR) / "rtl";
+  const fs::path list = rtl / "rpu.f";
+  std::istringstream in(read_input_file(list.string(), "RTL file list"));
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find("//"));
+    const size_t b = line.find_first_not_of(" \t\r"), e = line.find_last_not_of(" \t\r");
+    if (b == std::string::npos || line[b] == '+' || line[b] == '-') continue;  // +incdir+
+    const fs::path entry = line.substr(b, e - b + 1);
+    if (entry.stem() == module && entry.extension() == ".v") return rtl / entry;
+  }
+  throw Error(list.string(), "no such RTL module: " + module);
+}
+
 // The integer parameters the module's Verilog declares.
 std::vector<std::string> module_parameters(const std::string& module) {
-  const fs::path file = fs::path(RPU_SOURCE_DIR) / "rtl" / (module + ".v");
+  const fs::path file = module_file(module);
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) throw Error(file.string(), "no such RTL module");
   const std::string text = read_input_file(file.string(), "RTL module");

@@ -18,7 +18,7 @@
 #include "model/descriptors.h"
 #include "model/hw_params.h"
 #include "model/ref_renderer.h"
-#include "model/rpu_surface_top.h"
+#include "model/surface/rpu_surface_top.h"
 #include "model/units.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"

@@ -16,7 +16,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-rtl=$root/rtl
+# The design: every file of rtl/rpu.f (read deferred: `hierarchy -top` elaborates the target's
+# module and what it instantiates, nothing else).
+# shellcheck source=scripts/rtl_files.sh
+. scripts/rtl_files.sh
+rpu_rtl_read "$root" || exit 2
 
 smoke=0
 out=build/formal
@@ -27,7 +31,7 @@ while (($#)); do
     --smoke) smoke=1 ;;
     --out) out=$2; shift ;;
     --solver) solver=$2; shift ;;
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; exit 0 ;;
     -*) echo "formal.sh: $1: unknown option" >&2; exit 2 ;;
     *) targets+=("$1") ;;
   esac
@@ -40,10 +44,6 @@ done
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
-# rpu_top's hierarchy.
-top_files="rpu_top rpu_ray_gen rpu_sphere rpu_ip rpu_ip_step rpu_candidate rpu_capture
-  rpu_ray_plane rpu_texture rpu_fifo rpu_resolve rpu_mul rpu_sqrt rpu_div rpu_chord
-  rpu_guide_pair rpu_curve_point"
 # The reduced rpu_top: smallest widths, SqrtW 16 and the squared metric (shorter roots),
 # N = N1 = 1 (one IP step), 4 credits, 2-bit ids (ids stay distinct among <= 4 outstanding).
 top_params="CoordW=12 DirFrac=8 TFrac=8 UnitFrac=8 EdgeFrac=8 InvW=8 SqrtW=16 N=1 N1=1
@@ -52,7 +52,7 @@ top_params="CoordW=12 DirFrac=8 TFrac=8 UnitFrac=8 EdgeFrac=8 InvW=8 SqrtW=16 N=
 top_cut="res_pred1_o res_hit_o res_depth_o res_tau_o res_t_o res_x_o res_ovf_o res_prim_o
   pix_hit_o pix_depth_o pix_prim_o"
 
-# target -> "module|files|defines|params|bmc depth|induction depth (0: none)|cover depth|expect"
+# target -> "module|defines|params|bmc depth|induction depth (0: none)|cover depth|expect"
 # Depths: rpu_top's texture result is first reachable at step 96, its curve result at step 136
 # (cover; accepted at step 1). z3's cost per step grows steeply (8 minutes per step past 100 on a
 # 2-core machine), so the BMC stops at 102 steps (about 50 minutes: the texture path, all four
@@ -61,15 +61,15 @@ top_cut="res_pred1_o res_hit_o res_depth_o res_tau_o res_t_o res_x_o res_ovf_o r
 top_bmc=102; top_cover=145
 ((smoke)) && { top_bmc=16; top_cover=0; }
 declare -A spec=(
-  [fifo]="rpu_fifo|rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|8|12|pass"
-  [resolve]="rpu_resolve|rpu_resolve|RPU_FORMAL_RESOLVE|PixW=2 DepthW=3 PrimW=2|24|8|12|pass"
-  [admit]="rpu_surface_admit|rpu_surface_admit|RPU_FORMAL_ADMIT|Period=3 Returns=2|24|8|16|pass"
-  [top]="rpu_top|$(echo $top_files)||$(echo $top_params)|$top_bmc|0|$top_cover|pass"
-  [fifo_bug_full]="rpu_fifo|rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
-  [fifo_bug_stale]="rpu_fifo|rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
+  [fifo]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|8|12|pass"
+  [resolve]="rpu_resolve|RPU_FORMAL_RESOLVE|PixW=2 DepthW=3 PrimW=2|24|8|12|pass"
+  [admit]="rpu_surface_admit|RPU_FORMAL_ADMIT|Period=3 Returns=2|24|8|16|pass"
+  [top]="rpu_top||$(echo $top_params)|$top_bmc|0|$top_cover|pass"
+  [fifo_bug_full]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
+  [fifo_bug_stale]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
 )
 
-# Deliberate faults (sed expressions on a copy of rtl/rpu_fifo.v):
+# Deliberate faults (sed expressions on a copy of rtl/common/rpu_fifo.v):
 #   fifo_bug_full:  wr_ready_o always 1: a write while full overwrites the oldest entry.
 #   fifo_bug_stale: the output register loads only when taken, not when empty: an entry
 #                   arriving at an empty FIFO is announced with the previous entry's data.
@@ -96,27 +96,28 @@ run_smtbmc() {
 
 for t in "${targets[@]}"; do
   [ -n "${spec[$t]+x}" ] || { echo "formal.sh: $t: unknown target" >&2; exit 2; }
-  IFS='|' read -r mod files defs params bmc ind cov expect <<< "${spec[$t]}"
+  IFS='|' read -r mod defs params bmc ind cov expect <<< "${spec[$t]}"
   dir=$out/$t
   rm -rf "$dir"; mkdir -p "$dir"
   srcs=()
-  for f in $files; do
-    if [ -n "${mutation[$t]+x}" ] && [ "$f" = rpu_fifo ]; then
-      sed "${mutation[$t]}" "$rtl/$f.v" > "$dir/$f.v"
-      cmp -s "$rtl/$f.v" "$dir/$f.v" && { echo "formal.sh: $t: mutation did not apply" >&2; exit 2; }
-      srcs+=("$dir/$f.v")
+  for f in "${rtl_sources[@]}"; do
+    if [ -n "${mutation[$t]+x}" ] && [ "$(basename "$f")" = rpu_fifo.v ]; then
+      sed "${mutation[$t]}" "$f" > "$dir/rpu_fifo.v"
+      cmp -s "$f" "$dir/rpu_fifo.v" && { echo "formal.sh: $t: mutation did not apply" >&2; exit 2; }
+      srcs+=("$dir/rpu_fifo.v")
     else
-      srcs+=("$rtl/$f.v")
+      srcs+=("$f")
     fi
   done
+  incs=""
+  for d in "${rtl_incdirs[@]}"; do incs+=" -I $d"; done
   defines="-D FORMAL"
   for d in $defs; do defines+=" -D $d"; done
   chparam=""
-  for p in $params; do chparam+=" -set ${p%%=*} ${p#*=}"; done
+  for p in $params; do chparam+=" -chparam ${p%%=*} ${p#*=}"; done
   {
-    echo "read_verilog -formal -sv $defines -I $rtl ${srcs[*]}"
-    echo "chparam$chparam $mod"
-    echo "hierarchy -check -top $mod"
+    echo "read_verilog -defer -formal -sv $defines$incs ${srcs[*]}"
+    echo "hierarchy -check -top $mod$chparam"
     echo "proc"
     echo "flatten"
     if [ "$mod" = rpu_top ]; then

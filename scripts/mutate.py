@@ -39,6 +39,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 EQUIVALENT = ROOT / "sim" / "mutation" / "equivalent"  # <module>.tsv: the equivalent survivors
+RTL_LIST = ROOT / "rtl" / "rpu.f"  # the RTL file list (its +incdir+ lines: the include directories)
 CTRL_W = 12  # mutant selector width: up to 4,095 mutants per testbench
 
 
@@ -78,6 +79,20 @@ PLAN = [
     Family("rpu_top", "tb_rpu_top", 80),
 ]
 
+# The order in which the elaboration reads a testbench's files. Yosys names the cells it creates
+# from one counter that reading (elaborating) every file advances, and `mutate -list` samples by
+# those names, so the files read and their order decide which mutants a seed draws. The rule: the
+# top's file first, then the design's other files in rtl/rpu.f's order. The testbenches below keep
+# the order their recorded results (docs/verification.md, sim/mutation/equivalent/) were drawn
+# with (each testbench's own file list, before rtl/rpu.f), which the rule does not reproduce.
+# Drop an entry once its families' results are recorded afresh (--fresh, and their survivors
+# dispositioned again).
+RECORDED_ORDER = {
+    "tb_rpu_guide_pair": ["rpu_sqrt", "rpu_guide_pair", "rpu_mul"],
+    "tb_rpu_indicator": ["rpu_indicator", "rpu_indicator_add3", "rpu_indicator_delay", "rpu_cordic",
+                         "rpu_mul"],
+}
+
 # The CTest smoke: two mutants of each of five small testbenches, every one known to be killed.
 SMOKE = [
     Family("rpu_fifo", "tb_rpu_fifo_narrow", 2),
@@ -111,6 +126,16 @@ def read_manifest(build: Path) -> dict[str, tuple[str, list[str], list[str], lis
         split = lambda s: [x for x in s.split("|") if x]
         out[name] = (top, split(sources), split(params), split(args))
     return out
+
+
+def rtl_include_args() -> str:
+    """Yosys -I options for the include directories of rtl/rpu.f (relative to the checkout)."""
+    dirs = []
+    for line in RTL_LIST.read_text().splitlines():
+        line = line.split("//", 1)[0].strip()
+        if line.startswith("+incdir+"):
+            dirs.append(rel(str(RTL_LIST.parent / line[len("+incdir+"):])))
+    return " ".join(f"-I{d}" for d in dirs)
 
 
 def rel(p: str) -> str:
@@ -156,14 +181,47 @@ def src_of(line: str) -> str:
     return ", ".join(m) if m else "?"
 
 
+def design_sources(tb: str, top: str, sources: list[str], params: list[str],
+                   work: Path) -> list[str]:
+    """The files of a testbench's design: those defining its top and every module the top
+    instantiates at its parameters, in the read order of RECORDED_ORDER. The manifest names every
+    file of rtl/rpu.f (the testbench lets Verilator pick), but the elaboration must read only
+    these: an unused file read along would change the mutants drawn (RECORDED_ORDER)."""
+    chparam = " ".join(f"-set {p[2:].split('=')[0]} {p.split('=', 1)[1]}" for p in params)
+    listing = work / f"{tb}.modules"
+    ys = work / f"{tb}.modules.ys"
+    ys.write_text(f"read_verilog {rtl_include_args()} {' '.join(rel(s) for s in sources)}\n"
+                  + (f"chparam {chparam} {top}\n" if chparam else "")
+                  + f"hierarchy -check -top {top}\ntee -q -o {listing} ls\n")
+    run(["yosys", "-q", "-s", str(ys)], work / f"{tb}.modules.log")
+    # `ls`: "N modules:", then one module name per line: <module>, or derived with parameters
+    # $paramod$<hash>\<module> or $paramod\<module>\<parameter>=<value>...
+    text = listing.read_text()
+    names = re.findall(r"^\s+(\S+)$", text.split("modules:", 1)[-1], flags=re.M)
+    used = {n.split("\\")[1] if n.startswith("$paramod") else n for n in names}
+    out = []
+    for s in sources:
+        defined = set(re.findall(r"^\s*module\s+([A-Za-z_][A-Za-z0-9_$]*)", Path(s).read_text(),
+                                 flags=re.M))
+        if defined & used:
+            out.append(s)
+            used -= defined
+    if used:
+        die(f"{tb}: no file of the manifest defines {', '.join(sorted(used))}")
+    # The read order: the recorded one if any, else the top's file first (then the list's order).
+    rank = {m: k for k, m in enumerate(RECORDED_ORDER.get(tb, [top]))}
+    return sorted(out, key=lambda s: rank.get(Path(s).stem, len(rank)))
+
+
 def elaborate(tb: str, manifest, families: list[Family], seed: int, work: Path,
               mutant_dir: Path) -> list[tuple[int, Family, str, bool]]:
     """Writes mutant_dir/<tb>.v with every family's mutations; returns (selector, family, line,
     live) — live is false when nothing reads the mutated signal (its selector compare is gone)."""
     top, sources, params, _ = manifest[tb]
+    sources = design_sources(tb, top, sources, params, work)
     chparam = " ".join(f"-set {p[2:].split('=')[0]} {p.split('=', 1)[1]}" for p in params)
     reads = " ".join(rel(s) for s in sources)
-    base = [f"read_verilog -Irtl {reads}"]
+    base = [f"read_verilog {rtl_include_args()} {reads}"]
     if chparam:
         base.append(f"chparam {chparam} {top}")
     # A parameterised top may come out of `hierarchy` under a derived name: name it back.

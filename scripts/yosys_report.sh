@@ -2,11 +2,13 @@
 # Resource and logic-depth report of the RTL modules: Yosys `synth_xilinx` (7-series, flattened,
 # no I/O or clock buffers) of each module at its default parameters (or the configuration named
 # in the table below), the cell counts from `stat`, the longest combinational path from `ltp`
-# on the mapped netlist and Yosys' static timing estimate from `sta`. Needs only bash, coreutils,
-# awk, sed, grep and Yosys (Debian's 0.23).
+# on the mapped netlist and Yosys' static timing estimate from `sta`. Every run reads every file
+# of the RTL file list rtl/rpu.f; `hierarchy -top` elaborates the module and what it instantiates.
+# Needs only bash, coreutils, awk, sed, grep and Yosys (Debian's 0.23).
 #
 # Usage: scripts/yosys_report.sh [options] [module[:reduced] ...]
-#   (no modules)        every module of the table, smallest first; missing rtl files are skipped
+#   (no modules)        every module of the run order below, smallest first; a module no file
+#                       of rtl/rpu.f defines is skipped
 #   module:reduced      that module at its reduced configuration (rpu_ip, rpu_top)
 #   -r, --reduced       rpu_ip and rpu_top at their reduced configurations instead of the defaults
 #   -R                  both: the reduced configurations as extra rows, run before the full ones
@@ -52,7 +54,9 @@
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-rtl=$root/rtl
+# shellcheck source=scripts/rtl_files.sh
+. "$root/scripts/rtl_files.sh"
+rpu_rtl_read "$root" || exit 2
 ltp_cells=$root/scripts/yosys/ltp_cells.v
 
 # The report's columns (tabulate writes the values in this order).
@@ -60,27 +64,6 @@ header=(Module Configuration LUT INV FF SRL LUTRAM DSP48E1 BRAM36 CARRY4 MUXF7/8
         "Longest path (levels)" "sta ns" "Yosys s" "Yosys MB")
 
 # ---- the module table ----
-# Direct submodules (the script follows them recursively, and also adds any rpu_* instantiated
-# in a file that the table does not list, so a new submodule still gets read).
-declare -A DEPS=(
-  [rpu_sqrt]=""
-  [rpu_div]=""
-  [rpu_chord]="rpu_mul"
-  [rpu_capture]="rpu_mul"
-  [rpu_resolve]=""
-  [rpu_fifo]=""
-  [rpu_mul]=""
-  [rpu_curve_point]="rpu_mul"
-  [rpu_guide_pair]="rpu_sqrt rpu_mul"
-  [rpu_ray_gen]="rpu_sqrt rpu_div rpu_mul"
-  [rpu_sphere]="rpu_sqrt rpu_chord rpu_mul"
-  [rpu_candidate]="rpu_guide_pair rpu_curve_point rpu_sqrt rpu_mul"
-  [rpu_ip_step]="rpu_candidate"
-  [rpu_ip]="rpu_ip_step rpu_candidate rpu_fifo"
-  [rpu_ray_plane]="rpu_div rpu_mul"
-  [rpu_texture]="rpu_chord rpu_guide_pair rpu_curve_point rpu_mul"
-  [rpu_top]="rpu_ray_gen rpu_sphere rpu_ip rpu_capture rpu_fifo"
-)
 # Parameters set for the report (empty: the module's defaults).
 declare -A PARAMS=(
   [rpu_sqrt]="RadW=58"                       # the guide's radicand (= the default)
@@ -123,7 +106,8 @@ while (($#)); do
     *) specs+=("$1"); shift ;;
   esac
 done
-((${#specs[@]})) || specs=("${ALL[@]}")
+defaulted=0
+((${#specs[@]})) || { specs=("${ALL[@]}"); defaulted=1; }
 [[ $jobs_max =~ ^[1-9][0-9]*$ ]] || { echo "yosys_report: -j needs a positive number" >&2; exit 2; }
 [[ $tlimit =~ ^[1-9][0-9]*$ ]] || { echo "yosys_report: -t needs a positive number" >&2; exit 2; }
 [[ $mlimit =~ ^[1-9][0-9]*$ ]] || { echo "yosys_report: -m needs a positive number" >&2; exit 2; }
@@ -164,29 +148,19 @@ stop_runs() {
 trap stop_runs INT TERM
 yosys_version=$(yosys -V 2>/dev/null | head -1)
 
-# Submodules instantiated in a file: lines `rpu_x #(` or `rpu_x u_name (`.
-instantiated() {
-  sed -n 's/^[[:space:]]*\(rpu_[A-Za-z0-9_]*\)[[:space:]]*\(#\|[A-Za-z_][A-Za-z0-9_]*[[:space:]]*(\).*/\1/p' "$1" |
+# Every module the files of rtl/rpu.f define (a line `module name`), one per line.
+defined_modules() {
+  sed -n 's/^[[:space:]]*module[[:space:]]\{1,\}\([A-Za-z_][A-Za-z0-9_$]*\).*/\1/p' "${rtl_sources[@]}" |
     sort -u
 }
-
-# The files of a module and its submodules (top first); fails naming the first missing file.
-files_of() {
-  local top=$1 queue=("$1") seen=" " m d out=()
-  while ((${#queue[@]})); do
-    m=${queue[0]}
-    queue=("${queue[@]:1}")
-    [[ $seen == *" $m "* ]] && continue
-    seen+="$m "
-    [[ -f $rtl/$m.v ]] || { echo "rtl/$m.v"; return 1; }
-    out+=("$rtl/$m.v")
-    for d in ${DEPS[$m]:-} $(instantiated "$rtl/$m.v"); do
-      [[ $d == "$m" ]] || queue+=("$d")
-    done
-  done
-  printf '%s\n' "${out[@]}"
-  : "$top"
-}
+modules=$(defined_modules)
+# Every Yosys run reads the whole list (-I for its include directories, then every source file)
+# with -defer: `hierarchy -top` elaborates the module and its submodules only, exactly as when
+# only their files are read (elaborating every module at read time changes the names Yosys
+# gives to cells, and with them, slightly, what ABC maps).
+rtl_read=""
+for d in "${rtl_incdirs[@]}"; do rtl_read+="-I$d "; done
+rtl_read+="${rtl_sources[*]}"
 
 # The row of a finished run: resources from stat, the path and its make-up from ltp and the
 # cell lists, peak memory from the log. Fields: module, configuration, "ok", the values of
@@ -303,12 +277,12 @@ run_one() {
   if ((red)); then config="$config (reduced)"; fi
   if ((hier)); then config="$config (hierarchical)"; fi
 
-  if ! files=$(files_of "$mod"); then
-    printf '%s\t%s\tskipped (no %s)\n' "$mod" "$config" "$files" >"$work/$tag.row"
-    echo "[$(date +%T)] $spec: skipped, $files missing" >&2
+  if ! grep -qxF -- "$mod" <<<"$modules"; then
+    printf '%s\t%s\tskipped (no file of rtl/rpu.f defines it)\n' "$mod" "$config" >"$work/$tag.row"
+    echo "[$(date +%T)] $spec: skipped, no file of rtl/rpu.f defines $mod" >&2
     return 0
   fi
-  local flist=${files//$'\n'/ } chparam=""
+  local chparam=""
   for p in $params; do chparam+=" -chparam ${p%%=*} ${p#*=}"; done
   local sel="$mod/t:FD* $mod/t:LD* %u $mod/t:SRL* %u $mod/t:RAMB* %u"
   sel="$sel $mod/t:DSP48E1 r:MREG>0 %i %u $mod/t:DSP48E1 r:PREG>0 %i %u"
@@ -317,7 +291,7 @@ run_one() {
     # Totals over the hierarchy; no cell lists, no ltp and no sta (paths stop at module
     # boundaries).
     cat >"$work/$tag.ys" <<EOF
-read_verilog -I$rtl $flist
+read_verilog -defer $rtl_read
 hierarchy -check -top $mod$chparam
 synth_xilinx -noiopad -noclkbuf -top $mod
 tee -q -o $work/$tag.stat stat -tech xilinx -top $mod
@@ -325,7 +299,7 @@ EOF
     : >"$work/$tag.hier"
   else
   cat >"$work/$tag.ys" <<EOF
-read_verilog -I$rtl $flist
+read_verilog -defer $rtl_read
 hierarchy -check -top $mod$chparam
 synth_xilinx -flatten -noiopad -noclkbuf -top $mod
 tee -q -o $work/$tag.stat stat -tech xilinx
@@ -345,7 +319,7 @@ tee -q -o $work/$tag.ltp ltp -noff $mod/* @breaks %d
 EOF
   fi
   if ((dry)); then
-    echo "$spec: $config: $flist"
+    echo "$spec: $config: rtl/rpu.f, top $mod"
     return 0
   fi
   echo "[$(date +%T)] $spec: started ($config)" >&2
@@ -399,8 +373,8 @@ fi
 [[ -n $reparse ]] || echo "yosys_report: ${#specs[@]} module(s), -j $jobs_max, limit $tlimit s per module, $yosys_version, work dir $work" >&2
 for spec in "${specs[@]}"; do
   m=${spec%%:*}
-  if [[ -z ${DEPS[$m]+x} && ! -f $rtl/$m.v ]]; then
-    echo "yosys_report: unknown module $m" >&2
+  if ((!defaulted)) && ! grep -qxF -- "$m" <<<"$modules"; then
+    echo "yosys_report: unknown module $m (no file of rtl/rpu.f defines it)" >&2
     exit 2
   fi
   if [[ $spec == *:* && ( $spec != *:reduced || -z ${REDUCED[$m]:-} ) ]]; then

@@ -1,7 +1,7 @@
-// The CORDIC twin (ref/model/rpu_cordic.h) against libm: the constants, and every result within
-// the error bounds derived in docs/fixed-point.md ("CORDIC"): exhaustive over the input range at
-// w = 8, edges and random vectors at the default configuration. Prints the measured maximum
-// errors beside the bounds.
+// The CORDIC twin (ref/model/common/rpu_cordic.h) against libm: the constants, and every result
+// within the error bounds derived in docs/fixed-point.md ("CORDIC"): exhaustive over the input
+// range at w = 8, edges and random vectors at the default configuration. Prints the measured
+// maximum errors beside the bounds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +12,7 @@
 
 #include "test_seed.h"
 #include "common/error.h"
-#include "model/rpu_cordic.h"
+#include "model/common/rpu_cordic.h"
 
 namespace {
 

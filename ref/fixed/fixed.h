@@ -77,12 +77,12 @@ constexpr i128 round_half_up(i128 v, int bits) {
 }
 
 // Floor square root of an unsigned integer of at most `width` bits (1 ≤ width ≤ 126). The
-// hardware (rtl/rpu_sqrt) takes two radicand bits per stage, ceil(width/2) stages, each one
+// hardware (rtl/common/rpu_sqrt) takes two radicand bits per stage, ceil(width/2) stages, each one
 // add or subtract chosen by the sign of the partial remainder (non-restoring); it produces the
 // same root digits as the restoring compare-and-subtract recurrence that isqrt_digits writes
 // out literally. floor(√x) is a unique integer, so `isqrt` may reach it faster: below 2^64 it
 // refines a first guess with exact integer comparisons (r² ≤ x < (r+1)²). Both are tested
-// equal (tests/test_fixed.cpp), and the RTL against them (sim/tests/rpu_sqrt.cmake).
+// equal (tests/test_fixed.cpp), and the RTL against them (sim/tests/common/rpu_sqrt.cmake).
 u128 isqrt(u128 x, int width);
 u128 isqrt_digits(u128 x, int width);
 

@@ -1,4 +1,4 @@
-// Types and helpers the unit twins share (ref/model/rpu_*.h); no RTL module of its own.
+// Types and helpers the unit twins share (ref/model/*/rpu_*.h); no RTL module of its own.
 // Integer arithmetic only; every format is in docs/fixed-point.md and every narrowing is a named
 // fixed:: operation.
 #pragma once

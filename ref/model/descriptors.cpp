@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
-#include "model/surface_descriptors.h"
+#include "model/surface/surface_descriptors.h"
 
 namespace rpu::ref {
 namespace {

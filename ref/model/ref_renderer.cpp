@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/parallel.h"
-#include "model/rpu_surface_top.h"
+#include "model/surface/rpu_surface_top.h"
 #include "model/units.h"
 #include "scene/screen_bins.h"
 

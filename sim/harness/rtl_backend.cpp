@@ -22,7 +22,7 @@ namespace {
 int g_rtl_fault = 0;
 }  // namespace
 
-// DPI import of rtl/rpu_ip_step.v and rtl/rpu_resolve.v in the RPU_FAULT build.
+// DPI import of rtl/curve/rpu_ip_step.v and rtl/top/rpu_resolve.v in the RPU_FAULT build.
 extern "C" int rpu_fault() { return g_rtl_fault; }
 
 namespace rpu::sim {

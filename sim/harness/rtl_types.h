@@ -16,7 +16,7 @@ namespace rpu::sim {
 using fixed::i128;
 using fixed::u128;
 
-// rpu_top's widths at the given hardware parameters (rtl/rpu_top.v, docs/rtl.md). The
+// rpu_top's widths at the given hardware parameters (rtl/top/rpu_top.v, docs/rtl.md). The
 // top-level parameters that are not hardware parameters are fixed here and in every build.
 struct TopWidths {
   static constexpr int kSegAddrW = 12;  // segment RAM: 4096 descriptors

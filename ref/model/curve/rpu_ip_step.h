@@ -1,0 +1,37 @@
+// Twin of rtl/curve/rpu_ip_step.v | sim/tb/curve/tb_rpu_ip.cpp (-DIP_STEP=1) |
+// sim/tests/curve/rpu_ip.cmake
+// IP step: 2^n1 - 1 new candidates, pair sums, lowest-index argmin.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "model/curve/rpu_candidate.h"
+#include "model/curve/rpu_sphere.h"
+#include "model/datapath.h"
+
+namespace rpu::ref {
+
+struct IpState {
+  std::uint64_t tau = 0;  // τ index of the selected interval's start, n bits
+  Candidate lo, hi;       // the selected interval's end candidates
+  int k = 0;              // steps done
+};
+struct IpStepTrace {
+  std::array<i128, 257> md{};  // md_j, j = 0..J
+  std::array<i128, 256> sd{};  // sd_j = md_j + md_{j+1}
+  int eta = 0;
+};
+// The initial state (step 0): candidates τ = 0 and τ = 1 evaluated.
+IpState ip_start(const HwParams& p, const SegmentDesc& s, const SearchInterval& si, Overflow& ovf);
+// Step k = state.k + 1: J - 1 new candidates, pair sums, lowest-index argmin.
+IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                const IpState& state, Overflow& ovf, IpStepTrace* trace = nullptr);
+// The same step updating `state` in place (the model's hot loop).
+void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                      IpState& state, Overflow& ovf, IpStepTrace* trace = nullptr);
+// Lowest-index argmin of the pair sums (in rtl/curve/rpu_ip_step): strict < keeps the first
+// minimum.
+int argmin_lowest(const i128* sd, int count);
+
+}  // namespace rpu::ref

@@ -1,0 +1,918 @@
+// rpu_indicator: the inside bit of one point in a surface's local frame, for every primitive type,
+// twin of `rpu::ref::indicator_unit(params, surface, l, x_negative, last_turn, ovf, trace)`
+// (ref/model/surface/rpu_indicator.h; the indicators: docs/surfaces.md; formats: docs/fixed-point.md,
+// "Surfaces"). One configurable unit: `type_i` selects the primitive per point, so one pipeline
+// serves a scene that mixes them; the spiral's and snail's turns m = 0 .. Lanes−1 are parallel
+// lanes. Every type takes the same number of cycles (the longest, the relief's).
+//
+// Ports (LW = SurfW, AW = AngleW, KF = LW, MW = LW + 2, CW = LW + 6 the CORDIC width):
+//   type_i        SurfaceType: 0 ellipsoid, 1 relief ellipsoid, 2 spiral, 3 snail, 4 rocket
+//                 (5..7: inside 0, every output 0)
+//   l_i           the point {z, y, x}, llsb, LW bits signed each
+//   x_negative_i, last_turn_i   the piece's azimuth branch (spiral, snail; unused otherwise)
+//   SurfaceDesc fields, each its own port (unused by the types that do not read them):
+//   full_turns_i  4 bits                       sx_i, sy_i, sz_i   Q(1.KF), KF+1 bits unsigned
+//   r2_i          2LW+1 bits unsigned, ≤ 2^(2LW) (the descriptor's round(m·2^(F+G))² with
+//                 m·2^F ≤ 2^(LW−2): its local box fills at most a quarter of the LW range)
+//   kd_i, ke2_i   Q(1.KF), KF+2 bits signed    rho0_i, rocket_a_i, rocket_b_i   llsb, LW signed
+//   a_turn_i, k_turn_i   llsb per turn, LW+8 bits signed
+//   y_angle, fin, cone   ScaledConst m · 2^-s: *_m_i MW bits signed, *_s_i 8 bits unsigned (s ≥ 0)
+// Contract beyond the port widths: r2 ≤ 2^(2LW) and full_turns + last_turn ≤ Lanes. Within it the
+// outputs equal the twin's for every port value.
+// Outputs: inside_o; turn_inside_o (spiral, snail: the enabled lanes whose turn holds the point,
+// the trace's turn_inside); angle_o (ψ, or the relief's φ; 0 for the ellipsoid) and rho_o (ρ for
+// the spiral, snail and rocket; else 0), the trace's angle and rho; ovf_o, the sticky overflow
+// bit the twin sets (a CORDIC input saturated: a spiral lane's offset, the rocket's fin term).
+//
+// Latency = 1 + LF + Tv + LT + 3 + Tr + LB cycles (ref::indicator_latency; 75 at the defaults),
+//   LF = the front products, Tv / Tr = rpu_cordic's vectoring / rotation latency, LT = ψ·a_turn,
+//   LB = the back end after the rotation (the longest type's, every type padded to it).
+// One point per cycle, no stall; `tag_i` comes out unchanged with the result.
+//
+// Pipeline (every product an rpu_mul; every stage at most one wide carry chain, three-term sums as
+// one carry-save step and an adder, rpu_indicator_add3; context in the units' tags and in
+// rpu_indicator_delay lines):
+//   E1       inputs registered; the rocket's region (y ≤ 0 fins, y > b cone, else cylinder); the
+//            constant product's operand y or y − b, mantissa and shift (relief: y_angle; rocket:
+//            fin or cone), the shift clamped to PW − 1; lane enables m < full_turns + last_turn
+//   LF       x·sx, y·sy, z·sz and the constant product P (exact; padded to the slowest)
+//   Tv       rpu_cordic vectoring of (z·sz, x·sx) (relief) or (z, x): φ or ψ, ρ
+//   LT       ψ_u·a_turn, ψ_u·k_turn (ψ unwrapped on the piece's branch: two bits, no adder)
+//   T1       spiral: D0 = ρ − rho0 − r0, E0 = y − y0 (r0, y0 the products ≫ AW); P ≫ 8·(s ≫ 3)
+//   T2       spiral lane m: ρ − ρ_a = D0 − m·a_turn, y − y_a = E0 − m·k_turn (m·X as at most two
+//            shifted terms: 3 = 2 + 1, 5 = 4 + 1, 6 = 4 + 2, 7 = 8 − 1); P ≫ (s mod 8)
+//   T3       the CORDIC inputs saturated to CW − 1 bits; the rotation angles 4ψ (spiral),
+//            10φ ± 9y (relief, lanes 0 and 1: rotations of (ke2, 0)), 5ψ (rocket, lane 0: a
+//            rotation of (Y, 0)); Y saturated to CW + 1 bits (exact for ρ < r, see below)
+//   Tr       Lanes rpu_cordic rotations
+//   back end, in parallel:
+//     spiral   (u·sx, w·sy) ≫ (KF − G); each clamped (|·| ≥ 2^LW: outside, as r2 ≤ 2^(2LW));
+//              squared; r2 − 1 − A² − B² ≥ 0
+//     snail    (ρ − R_m)² − r_m² = (ρ − G_m)(ρ − G_{m+1}) with G_j = R_j − r_j = j·h_{j−1},
+//              h_j = 2r0 + j·a_turn (the turns' inner and outer edges), exact. Inside ⇔ the
+//              factors P_m, P_{m+1} have opposite signs and |P_m|·|P_{m+1}| > y². The smaller
+//              factor is capped at 2^LW − 1 (at ≥ 2^(LW−1) + 1 the product beats y² ≤ 2^(2LW−2)
+//              anyway), so the product is LW × (LW+15) bits.
+//     relief   k' = kd + y1 + y2; floor(k'²·2^-KF)·s²m² ≫ KF against (x·sx)² + (z·sz)², where
+//              s²m² = r2 − (y·sy)² > 0 (|y·sy| ≥ 2^LW: outside, as r2 ≤ 2^(2LW))
+//     ellipsoid r2 − 1 − (x·sx)² − (y·sy)² − (z·sz)² ≥ 0
+//     rocket   r = a − Y + (fins ? (rotation of (Y, 0) by 5ψ).y : 0) (Y = 0 on the cylinder,
+//              the cone's (y − b)·cone on the cone); ρ < r
+//   output   the type's bit, lanes, angle, ρ, overflow; registered
+//
+// Y = floor(y·m·2^-s) is exact in PW bits; the unit keeps it saturated to CW + 1 bits. That
+// leaves ρ < r unchanged: with |Y| ≥ 2^CW − 1, r is below 0 (Y > 0) or above 2^(CW−1) > ρ
+// (Y < 0) either way, since |a| < 2^(LW−1) and the rotated fin term is at most 2^(CW−2)·(1 + ε).
+`default_nettype none
+
+module rpu_indicator #(
+  parameter integer SurfW  = 24,  // LW: signed width of surface-local coordinates (16..36)
+  parameter integer AngleW = 20,  // AW: binary-angle bits, 2^AW = one turn (12..32, <= LW + 10)
+  parameter integer Lanes  = 8,   // spiral / snail turn lanes (2..8; the relief uses lanes 0, 1)
+  parameter integer TagW   = 1,   // side-band bits carried with each point (>= 1)
+  // Derived (do not override).
+  parameter integer KF     = SurfW,          // fraction bits of the Q(1.KF) constants
+  parameter integer MW     = SurfW + 2,      // mantissa bits of the ScaledConst constants
+  parameter integer TurnW  = SurfW + 8,      // a_turn, k_turn
+  parameter integer CW     = SurfW + 6,      // the CORDIC width LW + G + 4 (rho_o)
+  parameter integer R2W    = 2 * SurfW + 1   // r2, unsigned
+) (
+  input  wire                 clk_i,
+  input  wire                 rst_ni,
+  input  wire                 valid_i,
+  input  wire [2:0]           type_i,
+  input  wire [3*SurfW-1:0]   l_i,
+  input  wire                 x_negative_i,
+  input  wire                 last_turn_i,
+  input  wire [3:0]           full_turns_i,
+  input  wire [KF:0]          sx_i,
+  input  wire [KF:0]          sy_i,
+  input  wire [KF:0]          sz_i,
+  input  wire [R2W-1:0]       r2_i,
+  input  wire [KF+1:0]        kd_i,
+  input  wire [KF+1:0]        ke2_i,
+  input  wire [MW-1:0]        y_angle_m_i,
+  input  wire [7:0]           y_angle_s_i,
+  input  wire [SurfW-1:0]     rho0_i,
+  input  wire [TurnW-1:0]     a_turn_i,
+  input  wire [TurnW-1:0]     k_turn_i,
+  input  wire [SurfW-1:0]     rocket_a_i,
+  input  wire [SurfW-1:0]     rocket_b_i,
+  input  wire [MW-1:0]        fin_m_i,
+  input  wire [7:0]           fin_s_i,
+  input  wire [MW-1:0]        cone_m_i,
+  input  wire [7:0]           cone_s_i,
+  input  wire [TagW-1:0]      tag_i,
+  output reg                  valid_o,
+  output reg                  inside_o,
+  output reg  [Lanes-1:0]     turn_inside_o,
+  output reg  [AngleW-1:0]    angle_o,
+  output reg  [CW-1:0]        rho_o,
+  output reg                  ovf_o,
+  output reg  [TagW-1:0]      tag_o
+);
+`include "rpu_mul_latency.vh"
+  localparam integer LW   = SurfW;
+  localparam integer AW   = AngleW;
+  localparam integer G    = 2;             // guard bits of the scaled coordinates (kSurfGuard)
+  localparam integer XSW  = LW + 3;        // x·sx ≫ (KF − G): |·| ≤ 2^(LW+2)
+  localparam integer OPW  = LW + 1;        // the constant product's operand: y or y − b
+  localparam integer PW   = OPW + MW;      // the constant product P, exact
+  localparam integer SCW  = $clog2(PW);    // its shift, clamped to PW − 1
+  localparam integer YW   = CW + 1;        // Y = P ≫ s, saturated (rocket)
+  localparam integer PSW  = AW + 2;        // ψ unwrapped: [−¼, 1¼) turn
+  localparam integer R0W  = TurnW + 2;     // r0 = ψ_u·a_turn ≫ AW, y0 = ψ_u·k_turn ≫ AW
+  localparam integer SPW  = TurnW + 4;     // spiral lane offsets ρ − ρ_a, y − y_a (< 2^(TurnW+3))
+  localparam integer HW   = TurnW + 4;     // snail h_j = 2r0 + j·a_turn (< 2^(TurnW+3))
+  localparam integer PJW  = TurnW + 8;     // snail P_j = ρ − j·h_{j−1} (< 2^(TurnW+7))
+  localparam integer HIW  = PJW - 1;       // |P_j|
+  localparam integer SCLW = CW + G + 2;    // spiral u·sx ≫ (KF − G)
+  localparam integer KW   = CW + 2;        // relief k' = kd + y1 + y2 (|k'| < 2^(CW+1))
+  localparam integer K2W  = 2 * KW - 2 - KF;  // floor(k'²·2^-KF)
+  localparam integer D2W  = 2 * LW + 1;    // s²m² = r2 − (y·sy)², 0 < · ≤ 2^(2LW) where used
+  localparam integer RHW  = K2W + D2W - KF;   // the relief's right-hand side
+  localparam integer LHW  = 2 * XSW;      // (x·sx)² + (z·sz)² < 2^(2LW+5)
+  localparam integer SQW  = 2 * LW + 1;    // a clamped square: ≤ 2^(2LW)
+  localparam integer RW   = YW + 2;        // the rocket's radius r
+
+  initial begin
+    if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_indicator: SurfW must be in 16..36");
+    if (AngleW < 12 || AngleW > 32) $fatal(1, "rpu_indicator: AngleW must be in 12..32");
+    if (AngleW > SurfW + 10)
+      $fatal(1, "rpu_indicator: AngleW must be <= SurfW + 10 (CORDIC stages <= its width + 4)");
+    if (Lanes < 2 || Lanes > 8) $fatal(1, "rpu_indicator: Lanes must be in 2..8");
+    if (TagW < 1) $fatal(1, "rpu_indicator: TagW must be >= 1");
+    if (KF != SurfW || MW != SurfW + 2 || TurnW != SurfW + 8 || CW != SurfW + 6 ||
+        R2W != 2 * SurfW + 1)
+      $fatal(1, "rpu_indicator: derived parameters must not be overridden");
+  end
+
+  // ---- latencies of the products (rpu_mul_latency.vh) ----
+  localparam integer LSx  = rpu_mul_latency(LW, KF + 2, 1, 24, 17);   // x·sx
+  localparam integer LCp  = rpu_mul_latency(OPW, MW, 1, 24, 17);      // y·m
+  localparam integer LF   = LSx > LCp ? LSx : LCp;
+  localparam integer LSc  = rpu_mul_latency(CW, KF + 2, 1, 24, 17);   // spiral u·sx
+  localparam integer LQ   = rpu_mul_latency(LW + 1, LW + 1, 1, 24, 17);  // clamped squares
+  localparam integer LX   = rpu_mul_latency(XSW, XSW, 1, 24, 17);     // (x·sx)²
+  localparam integer LXY  = LX > 1 + LQ ? LX : 1 + LQ;                 // all three squares
+  localparam integer LK   = rpu_mul_latency(KW, KW, 1, 24, 17);       // k'²
+  localparam integer LKD  = rpu_mul_latency(K2W, D2W, 0, 24, 17);     // k2·s²m²
+  localparam integer LN   = rpu_mul_latency(LW, HIW, 0, 24, 17);      // snail |P|·|P|
+  // The back end, in cycles after the rotations (the registered bit of each type):
+  localparam integer BSp  = LSc + LQ + 2;  // spiral
+  localparam integer BEl  = LXY + 2;       // ellipsoid
+  localparam integer BSn  = LN + 5;        // snail
+  localparam integer BRo  = 2;             // rocket
+  localparam integer TKD  = 1 + LK > LXY + 1 ? 1 + LK : LXY + 1;  // the relief's k2·s²m² starts
+  localparam integer BRe  = TKD + LKD;     // relief: rhs ready (the compare is the output stage)
+  localparam integer BM1  = BSp > BEl ? BSp : BEl;
+  localparam integer BM2  = BSn > BRo ? BSn : BRo;
+  localparam integer BM3  = BM1 > BM2 ? BM1 : BM2;
+  localparam integer BLast = BM3 > BRe ? BM3 : BRe;  // the last registered bit
+  localparam integer LB   = BLast + 1;     // the output register
+  /* verilator lint_off UNUSEDPARAM */
+  // The unit's latency without the two CORDICs (ref::indicator_latency adds them).
+  localparam integer LatencyOwn = 1 + LF + rpu_mul_latency(PSW, TurnW, 1, 24, 17) + 3 + LB;
+  /* verilator lint_on UNUSEDPARAM */
+
+  // m·X = X·2^T1S(m) ± X·2^T2S(m), m = 1..8 (1, 2, 2 + 1, 4, 4 + 1, 4 + 2, 8 − 1, 8).
+  function integer t1_shift(input integer k);
+    t1_shift = k >= 7 ? 3 : k >= 4 ? 2 : k >= 2 ? 1 : 0;
+  endfunction
+  function integer t2_used(input integer k);
+    t2_used = (k == 3 || k == 5 || k == 6 || k == 7) ? 1 : 0;
+  endfunction
+  function integer t2_shift(input integer k);
+    t2_shift = k == 6 ? 1 : 0;
+  endfunction
+  function integer t2_neg(input integer k);
+    t2_neg = k == 7 ? 1 : 0;
+  endfunction
+
+  genvar m;
+
+  // ===============================================================================================
+  // E1: inputs registered; the constant product's operand; the rocket's region; lane enables.
+  // ===============================================================================================
+  wire [LW-1:0] lx = l_i[0*LW +: LW];
+  wire [LW-1:0] ly = l_i[1*LW +: LW];
+  wire [LW-1:0] lz = l_i[2*LW +: LW];
+  wire [4:0]    typ = {type_i == 3'd4, type_i == 3'd3, type_i == 3'd2, type_i == 3'd1,
+                       type_i == 3'd0};  // one-hot {rocket, snail, spiral, relief, ellipsoid}
+  wire [OPW-1:0] ly_x  = {ly[LW-1], ly};
+  wire [OPW-1:0] rb_x  = {rocket_b_i[LW-1], rocket_b_i};
+  wire [OPW-1:0] ymb   = ly_x - rb_x;  // y − b, exact
+  wire [OPW-1:0] bmy   = rb_x - ly_x;  // b − y: negative ⇔ y > b
+  wire           fins  = ly[LW-1] | ~|ly;          // y ≤ 0
+  wire           cone  = ~fins & bmy[OPW-1];       // y > b (> 0)
+  wire           cyl   = ~fins & ~bmy[OPW-1];      // 0 < y ≤ b
+  wire [OPW-1:0] op    = typ[4] && cone ? ymb : ly_x;
+  wire [MW-1:0]  cm    = typ[1] ? y_angle_m_i : fins ? fin_m_i : cone_m_i;
+  wire [7:0]     cs    = typ[1] ? y_angle_s_i : fins ? fin_s_i : cone_s_i;
+  // A shift by PW − 1 or more leaves the sign in every bit, as by PW − 1.
+  localparam integer   ScMaxI = PW - 1;
+  localparam [7:0]     ScMax8 = ScMaxI[7:0];
+  localparam [SCW-1:0] ScMax  = ScMaxI[SCW-1:0];
+  wire [SCW-1:0] sc    = cs >= ScMax8 ? ScMax : cs[SCW-1:0];
+  wire [Lanes-1:0] en;
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_en
+      localparam [3:0] M4 = m;
+      assign en[m] = (full_turns_i > M4) | (last_turn_i & (full_turns_i == M4));
+    end
+  endgenerate
+
+  // The context after E1: {tag, type, x_negative, en, x, y, z, rho0, a_turn, k_turn, sx, sy, r2,
+  // kd, ke2, a, shift, fins, cylinder}.
+  localparam integer C1W = TagW + 5 + 1 + Lanes + 4 * LW + 2 * TurnW + 2 * (KF + 1) + R2W +
+                           2 * (KF + 2) + LW + SCW + 2;
+  reg [C1W-1:0]  s1_ctx_q;
+  reg [LW-1:0]   s1_x_q, s1_y_q, s1_z_q;
+  reg [KF:0]     s1_sx_q, s1_sy_q, s1_sz_q;
+  reg [OPW-1:0]  s1_op_q;
+  reg [MW-1:0]   s1_cm_q;
+  reg            s1_valid_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) s1_valid_q <= 1'b0;
+    else         s1_valid_q <= valid_i;
+  end
+  always @(posedge clk_i) begin
+    s1_ctx_q <= {tag_i, typ, x_negative_i, en, lx, ly, lz, rho0_i, a_turn_i, k_turn_i, sx_i, sy_i,
+                 r2_i, kd_i, ke2_i, rocket_a_i, sc, fins, cyl};
+    s1_x_q   <= lx;
+    s1_y_q   <= ly;
+    s1_z_q   <= lz;
+    s1_sx_q  <= sx_i;
+    s1_sy_q  <= sy_i;
+    s1_sz_q  <= sz_i;
+    s1_op_q  <= op;
+    s1_cm_q  <= cm;
+  end
+  wire unused_e1 = ^cs[7:SCW];
+
+  // ===============================================================================================
+  // LF: the scaled coordinates x·sx, y·sy, z·sz (floor to G bits below the llsb) and P = op·m.
+  // ===============================================================================================
+  localparam integer SxPW = LW + KF + 2;
+  wire [SxPW-1:0] pxs, pys, pzs;
+  wire [PW-1:0]   pcp;
+  wire            f_valid;
+  wire [C1W-1:0]  f_ctx;
+  wire            mv_ys, mv_zs, mv_cp;
+  wire            mt_ys, mt_zs, mt_cp;
+  rpu_mul #(.AW(LW), .BW(KF + 2), .Signed(1), .TagW(C1W), .Latency(LF)) u_xs (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_x_q), .b_i({1'b0, s1_sx_q}),
+    .tag_i(s1_ctx_q), .valid_o(f_valid), .p_o(pxs), .tag_o(f_ctx));
+  rpu_mul #(.AW(LW), .BW(KF + 2), .Signed(1), .TagW(1), .Latency(LF)) u_ys (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_y_q), .b_i({1'b0, s1_sy_q}),
+    .tag_i(1'b0), .valid_o(mv_ys), .p_o(pys), .tag_o(mt_ys));
+  rpu_mul #(.AW(LW), .BW(KF + 2), .Signed(1), .TagW(1), .Latency(LF)) u_zs (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_z_q), .b_i({1'b0, s1_sz_q}),
+    .tag_i(1'b0), .valid_o(mv_zs), .p_o(pzs), .tag_o(mt_zs));
+  rpu_mul #(.AW(OPW), .BW(MW), .Signed(1), .TagW(1), .Latency(LF)) u_cp (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_op_q), .b_i(s1_cm_q),
+    .tag_i(1'b0), .valid_o(mv_cp), .p_o(pcp), .tag_o(mt_cp));
+  // x·k < 2^(LW+KF) in magnitude (k < 2^(KF+1)): bits KF − G .. LW + KF of the product.
+  wire [XSW-1:0] xs = pxs[KF-G +: XSW];
+  wire [XSW-1:0] ys = pys[KF-G +: XSW];
+  wire [XSW-1:0] zs = pzs[KF-G +: XSW];
+  wire unused_f = ^{mv_ys, mv_zs, mv_cp, mt_ys, mt_zs, mt_cp, pxs[KF-G-1:0], pys[KF-G-1:0],
+                    pzs[KF-G-1:0], pxs[SxPW-1], pys[SxPW-1], pzs[SxPW-1]};
+
+  wire [TagW-1:0]  f_tag;
+  wire [4:0]       f_typ;
+  wire             f_xneg, f_fins, f_cyl;
+  wire [Lanes-1:0] f_en;
+  wire [LW-1:0]    f_x, f_y, f_z, f_rho0, f_ra;
+  wire [TurnW-1:0] f_at, f_kt;
+  wire [KF:0]      f_sx, f_sy;
+  wire [R2W-1:0]   f_r2;
+  wire [KF+1:0]    f_kd, f_ke2;
+  wire [SCW-1:0]   f_sc;
+  assign {f_tag, f_typ, f_xneg, f_en, f_x, f_y, f_z, f_rho0, f_at, f_kt, f_sx, f_sy, f_r2, f_kd,
+          f_ke2, f_ra, f_sc, f_fins, f_cyl} = f_ctx;
+
+  // ===============================================================================================
+  // Tv: vectoring of (z·sz, x·sx) (relief: φ = atan2(x/a, z/c)) or (z, x): ψ, ρ. Never saturated:
+  // |x·sx| < 2^(LW+2) ≤ 2^(CW−2).
+  // ===============================================================================================
+  localparam integer C2W = TagW + 5 + 1 + Lanes + 3 * LW + 2 * TurnW + 2 * (KF + 1) + R2W +
+                           2 * (KF + 2) + SCW + 2 + 3 * XSW + PW;
+  wire [CW-1:0] vx_in = f_typ[1] ? {{(CW - XSW){zs[XSW-1]}}, zs} : {{(CW - LW){f_z[LW-1]}}, f_z};
+  wire [CW-1:0] vy_in = f_typ[1] ? {{(CW - XSW){xs[XSW-1]}}, xs} : {{(CW - LW){f_x[LW-1]}}, f_x};
+  wire          v_valid;
+  wire [CW-1:0] v_mag, v_y_unused;
+  wire [AW-1:0] v_angle;
+  wire [C2W-1:0] v_ctx;
+  rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(0), .TagW(C2W)) u_vec (
+    .clk_i, .rst_ni, .valid_i(f_valid), .x_i(vx_in), .y_i(vy_in), .angle_i({AW{1'b0}}),
+    .tag_i({f_tag, f_typ, f_xneg, f_en, f_y, f_rho0, f_at, f_kt, f_sx, f_sy, f_r2, f_kd, f_ke2,
+            f_ra, f_sc, f_fins, f_cyl, xs, ys, zs, pcp}),
+    .valid_o(v_valid), .x_o(v_mag), .y_o(v_y_unused), .angle_o(v_angle), .tag_o(v_ctx));
+
+  wire [TagW-1:0]  v_tag;
+  wire [4:0]       v_typ;
+  wire             v_xneg, v_fins, v_cyl;
+  wire [Lanes-1:0] v_en;
+  wire [LW-1:0]    v_y, v_rho0, v_ra;
+  wire [TurnW-1:0] v_at, v_kt;
+  wire [KF:0]      v_sx, v_sy;
+  wire [R2W-1:0]   v_r2;
+  wire [KF+1:0]    v_kd, v_ke2;
+  wire [SCW-1:0]   v_sc;
+  wire [XSW-1:0]   v_xs, v_ys, v_zs;
+  wire [PW-1:0]    v_p;
+  assign {v_tag, v_typ, v_xneg, v_en, v_y, v_rho0, v_at, v_kt, v_sx, v_sy, v_r2, v_kd, v_ke2, v_ra,
+          v_sc, v_fins, v_cyl, v_xs, v_ys, v_zs, v_p} = v_ctx;
+
+  // ψ unwrapped on the piece's branch (unwrap_azimuth): x ≥ 0 and ψ ≥ ¾ turn → ψ − 2^AW;
+  // x < 0 and ψ < ¼ turn → ψ + 2^AW. Only the two bits above ψ change.
+  wire [1:0]     v_top = v_angle[AW-1:AW-2];
+  wire [PSW-1:0] psi   = {(!v_xneg && v_top == 2'b11) ? 2'b11 :
+                          (v_xneg && v_top == 2'b00) ? 2'b01 : 2'b00, v_angle};
+
+  // ===============================================================================================
+  // LT: ψ_u·a_turn and ψ_u·k_turn (exact); the context rides in the first product's tag.
+  // ===============================================================================================
+  localparam integer C3W = C2W - 1 + AW + CW;
+  localparam integer TPW = PSW + TurnW;
+  wire [TPW-1:0] pat, pkt;
+  wire           t_valid, v_pkt, t_pkt;
+  wire [C3W-1:0] t_ctx;
+  rpu_mul #(.AW(PSW), .BW(TurnW), .Signed(1), .TagW(C3W)) u_at (
+    .clk_i, .rst_ni, .valid_i(v_valid), .a_i(psi), .b_i(v_at),
+    .tag_i({v_tag, v_typ, v_en, v_y, v_rho0, v_at, v_kt, v_sx, v_sy, v_r2, v_kd, v_ke2, v_ra, v_sc,
+            v_fins, v_cyl, v_xs, v_ys, v_zs, v_p, v_angle, v_mag}),
+    .valid_o(t_valid), .p_o(pat), .tag_o(t_ctx));
+  rpu_mul #(.AW(PSW), .BW(TurnW), .Signed(1), .TagW(1)) u_kt (
+    .clk_i, .rst_ni, .valid_i(v_valid), .a_i(psi), .b_i(v_kt),
+    .tag_i(1'b0), .valid_o(v_pkt), .p_o(pkt), .tag_o(t_pkt));
+  wire unused_v = ^{v_y_unused, v_pkt, t_pkt, pat[AW-1:0], pkt[AW-1:0]};
+
+  wire [TagW-1:0]  t_tag;
+  wire [4:0]       t_typ;
+  wire             t_fins, t_cyl;
+  wire [Lanes-1:0] t_en;
+  wire [LW-1:0]    t_y, t_rho0, t_ra;
+  wire [TurnW-1:0] t_at, t_kt;
+  wire [KF:0]      t_sx, t_sy;
+  wire [R2W-1:0]   t_r2;
+  wire [KF+1:0]    t_kd, t_ke2;
+  wire [SCW-1:0]   t_sc;
+  wire [XSW-1:0]   t_xs, t_ys, t_zs;
+  wire [PW-1:0]    t_p;
+  wire [AW-1:0]    t_angle;
+  wire [CW-1:0]    t_rho;
+  assign {t_tag, t_typ, t_en, t_y, t_rho0, t_at, t_kt, t_sx, t_sy, t_r2, t_kd, t_ke2, t_ra, t_sc,
+          t_fins, t_cyl, t_xs, t_ys, t_zs, t_p, t_angle, t_rho} = t_ctx;
+  // r0 = floor(a_turn·ψ_u·2^-AW) (= a·ψ), y0 = floor(k_turn·ψ_u·2^-AW): the products' top bits.
+  wire [R0W-1:0] t_r0 = pat[AW +: R0W];
+  wire [R0W-1:0] t_y0 = pkt[AW +: R0W];
+
+  // ===============================================================================================
+  // T1: D0 = ρ − rho0 − r0, E0 = y − y0 (spiral); the coarse shift of P.
+  // ===============================================================================================
+  wire [SPW-1:0] d0, e0;
+  rpu_indicator_add3 #(.W(SPW), .NegB(1), .NegC(1), .Cin(2)) u_d0 (
+    .a_i({{(SPW - CW){1'b0}}, t_rho}), .b_i({{(SPW - LW){t_rho0[LW-1]}}, t_rho0}),
+    .c_i({{(SPW - R0W){t_r0[R0W-1]}}, t_r0}), .s_o(d0));
+  assign e0 = {{(SPW - LW){t_y[LW-1]}}, t_y} - {{(SPW - R0W){t_y0[R0W-1]}}, t_y0};
+  wire signed [PW-1:0] coarse = $signed(t_p) >>> {t_sc[SCW-1:3], 3'b000};
+
+  reg [SPW-1:0]   t1_d0_q, t1_e0_q;
+  reg [PW-1:0]    t1_coarse_q;
+  reg [2:0]       t1_scl_q;
+  reg [TurnW-1:0] t1_at_q, t1_kt_q;
+  reg [R0W-1:0]   t1_r0_q;
+  reg             t1_valid_q, t2_valid_q, t3_valid_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      t1_valid_q <= 1'b0;
+      t2_valid_q <= 1'b0;
+      t3_valid_q <= 1'b0;
+    end else begin
+      t1_valid_q <= t_valid;
+      t2_valid_q <= t1_valid_q;
+      t3_valid_q <= t2_valid_q;
+    end
+  end
+  always @(posedge clk_i) begin
+    t1_d0_q     <= d0;
+    t1_e0_q     <= e0;
+    t1_coarse_q <= coarse;
+    t1_scl_q    <= t_sc[2:0];
+    t1_at_q     <= t_at;
+    t1_kt_q     <= t_kt;
+    t1_r0_q     <= t_r0;
+  end
+
+  // The context for after the rotations: {tag, type, en, y, sx, sy, r2, kd, a, x·sx, y·sy, z·sz,
+  // angle, ρ, fins, cylinder} three cycles on; what T3 reads two cycles on; a_turn and r0 two
+  // cycles on from T1.
+  localparam integer CDW = TagW + 5 + Lanes + LW + 2 * (KF + 1) + R2W + (KF + 2) + LW + 3 * XSW +
+                           AW + CW + 2;
+  wire [CDW-1:0] t3_ctx;
+  rpu_indicator_delay #(.W(CDW), .D(3)) u_dl_t3 (
+    .clk_i, .valid_i(t_valid),
+    .d_i({t_tag, t_typ, t_en, t_y, t_sx, t_sy, t_r2, t_kd, t_ra, t_xs, t_ys, t_zs, t_angle, t_rho,
+          t_fins, t_cyl}),
+    .d_o(t3_ctx));
+  localparam integer CEW = 5 + Lanes + AW + KF + 2 + 1;
+  wire [4:0]       t2_typ;
+  wire [Lanes-1:0] t2_en;
+  wire [AW-1:0]    t2_angle;
+  wire [KF+1:0]    t2_ke2;
+  wire             t2_fins;
+  rpu_indicator_delay #(.W(CEW), .D(2)) u_dl_t2 (
+    .clk_i, .valid_i(t_valid), .d_i({t_typ, t_en, t_angle, t_ke2, t_fins}),
+    .d_o({t2_typ, t2_en, t2_angle, t2_ke2, t2_fins}));
+  wire [TurnW-1:0] t3_at;
+  wire [R0W-1:0]   t3_r0;
+  rpu_indicator_delay #(.W(TurnW + R0W), .D(2)) u_dl_t3b (
+    .clk_i, .valid_i(t1_valid_q), .d_i({t1_at_q, t1_r0_q}), .d_o({t3_at, t3_r0}));
+
+  // ===============================================================================================
+  // T2: spiral lane m: ρ − ρ_a = D0 − m·a_turn, y − y_a = E0 − m·k_turn; the fine shift of P.
+  // ===============================================================================================
+  wire [SPW-1:0] at_x = {{(SPW - TurnW){t1_at_q[TurnW-1]}}, t1_at_q};
+  wire [SPW-1:0] kt_x = {{(SPW - TurnW){t1_kt_q[TurnW-1]}}, t1_kt_q};
+  reg  [Lanes*SPW-1:0] t2_dr_q, t2_dy_q;
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_off
+      localparam integer U1 = m != 0 ? 1 : 0;
+      localparam integer U2 = t2_used(m);
+      localparam integer N2 = t2_neg(m);
+      // D0 − t1 − (±t2): t1 subtracted, t2 subtracted unless it is the "− X" of 7 = 8 − 1.
+      localparam integer SubC = (U2 != 0 && N2 == 0) ? 1 : 0;
+      wire [SPW-1:0] ta1 = U1 != 0 ? at_x << t1_shift(m) : {SPW{1'b0}};
+      wire [SPW-1:0] ta2 = U2 != 0 ? at_x << t2_shift(m) : {SPW{1'b0}};
+      wire [SPW-1:0] tk1 = U1 != 0 ? kt_x << t1_shift(m) : {SPW{1'b0}};
+      wire [SPW-1:0] tk2 = U2 != 0 ? kt_x << t2_shift(m) : {SPW{1'b0}};
+      wire [SPW-1:0] dr, dy;
+      rpu_indicator_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dr (
+        .a_i(t1_d0_q), .b_i(ta1), .c_i(ta2), .s_o(dr));
+      rpu_indicator_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dy (
+        .a_i(t1_e0_q), .b_i(tk1), .c_i(tk2), .s_o(dy));
+      always @(posedge clk_i) begin
+        t2_dr_q[m*SPW +: SPW] <= dr;
+        t2_dy_q[m*SPW +: SPW] <= dy;
+      end
+    end
+  endgenerate
+  reg [PW-1:0] t2_r_q;  // Y = floor(P·2^-s), exact
+  always @(posedge clk_i) t2_r_q <= $signed(t1_coarse_q) >>> t1_scl_q;
+
+  // ===============================================================================================
+  // T3: the rotation inputs. Saturation to CW − 1 bits (cordic_in): |v| ≤ 2^(CW−2) passes.
+  // ===============================================================================================
+  localparam integer SatTop = CW - 2;  // bits SatTop and up must equal the sign
+  wire [CW-2:0] sat_max = {1'b0, {(CW - 2){1'b1}}};
+  wire [CW-2:0] sat_min = {1'b1, {(CW - 2){1'b0}}};
+  reg  [Lanes*CW-1:0] t3_rx_q, t3_ry_q;
+  reg  [Lanes*AW-1:0] t3_ra_q;
+  reg  [Lanes-1:0]    t3_sat_q;
+  // Y (rocket): saturated to YW bits (exact for ρ < r) and to CW − 1 bits (the CORDIC input).
+  wire [PW-YW:0]   r_hi_y = t2_r_q[PW-1:YW-1];
+  wire [PW-SatTop-1:0] r_hi_c = t2_r_q[PW-1:SatTop];
+  wire             r_neg  = t2_r_q[PW-1];
+  wire             fit_y  = &r_hi_y | ~|r_hi_y;
+  wire             fit_c  = &r_hi_c | ~|r_hi_c;
+  wire [YW-1:0]    ysat   = fit_y ? t2_r_q[YW-1:0] : {r_neg, {(YW - 1){~r_neg}}};
+  wire [CW-2:0]    ycin   = fit_c ? t2_r_q[CW-2:0] : r_neg ? sat_min : sat_max;
+  // The angles: 4ψ (spiral), 5ψ (rocket), 10φ ± 9y (relief), modulo a turn.
+  wire [AW-1:0] a9  = t2_r_q[AW-1:0];
+  wire [AW-1:0] a4  = {t2_angle[AW-3:0], 2'b00};
+  wire [AW-1:0] a5  = a4 + t2_angle;
+  wire [AW-1:0] a8  = {t2_angle[AW-4:0], 3'b000};
+  wire [AW-1:0] a2  = {t2_angle[AW-2:0], 1'b0};
+  wire [AW-1:0] ang_p, ang_m;
+  rpu_indicator_add3 #(.W(AW), .NegB(0), .NegC(0), .Cin(0)) u_angp (
+    .a_i(a8), .b_i(a2), .c_i(a9), .s_o(ang_p));
+  rpu_indicator_add3 #(.W(AW), .NegB(0), .NegC(1), .Cin(1)) u_angm (
+    .a_i(a8), .b_i(a2), .c_i(a9), .s_o(ang_m));
+  wire [CW-1:0] ke2_x  = {{(CW - KF - 2){t2_ke2[KF+1]}}, t2_ke2};
+  wire [CW-1:0] ycin_x = {ycin[CW-2], ycin};
+  wire          rel2   = t2_typ[1];
+  wire          roc2   = t2_typ[4];
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_rin
+      wire [SPW-1:0] dr = t2_dr_q[m*SPW +: SPW];
+      wire [SPW-1:0] dy = t2_dy_q[m*SPW +: SPW];
+      wire [SPW-SatTop-1:0] hr = dr[SPW-1:SatTop];
+      wire [SPW-SatTop-1:0] hy = dy[SPW-1:SatTop];
+      wire fr = &hr | ~|hr;
+      wire fy = &hy | ~|hy;
+      wire [CW-2:0] sr = fr ? dr[CW-2:0] : dr[SPW-1] ? sat_min : sat_max;
+      wire [CW-2:0] sy = fy ? dy[CW-2:0] : dy[SPW-1] ? sat_min : sat_max;
+      wire [CW-1:0] sr_x = {sr[CW-2], sr};
+      wire [CW-1:0] sy_x = {sy[CW-2], sy};
+      wire [CW-1:0] in_x, in_y;
+      wire [AW-1:0] in_a;
+      if (m == 0) begin : g_l0  // relief (ke2, 0) by 10φ + 9y; rocket (Y, 0) by 5ψ
+        assign in_x = rel2 ? ke2_x : roc2 ? ycin_x : sr_x;
+        assign in_y = rel2 || roc2 ? {CW{1'b0}} : sy_x;
+        assign in_a = rel2 ? ang_p : roc2 ? a5 : a4;
+      end else if (m == 1) begin : g_l1  // relief (ke2, 0) by 10φ − 9y
+        assign in_x = rel2 ? ke2_x : sr_x;
+        assign in_y = rel2 ? {CW{1'b0}} : sy_x;
+        assign in_a = rel2 ? ang_m : a4;
+      end else begin : g_ln
+        assign in_x = sr_x;
+        assign in_y = sy_x;
+        assign in_a = a4;
+      end
+      always @(posedge clk_i) begin
+        t3_rx_q[m*CW +: CW]  <= in_x;
+        t3_ry_q[m*CW +: CW]  <= in_y;
+        t3_ra_q[m*AW +: AW]  <= in_a;
+        t3_sat_q[m]          <= t2_en[m] & ~(fr & fy);
+      end
+    end
+  endgenerate
+  reg [YW-1:0] t3_ysat_q;
+  reg          t3_ovf_roc_q;
+  always @(posedge clk_i) begin
+    t3_ysat_q    <= ysat;
+    t3_ovf_roc_q <= roc2 & t2_fins & ~fit_c;  // the twin saturates Y on the fins only
+  end
+  wire unused_t2 = ^{t2_typ[0], t2_typ[3:2]};
+
+  wire [TagW-1:0]  q_tag;
+  wire [4:0]       q_typ;
+  wire [Lanes-1:0] q_en;
+  wire [LW-1:0]    q_y, q_ra;
+  wire [KF:0]      q_sx, q_sy;
+  wire [R2W-1:0]   q_r2;
+  wire [KF+1:0]    q_kd;
+  wire [XSW-1:0]   q_xs, q_ys, q_zs;
+  wire [AW-1:0]    q_angle;
+  wire [CW-1:0]    q_rho;
+  wire             q_fins, q_cyl;
+  assign {q_tag, q_typ, q_en, q_y, q_sx, q_sy, q_r2, q_kd, q_ra, q_xs, q_ys, q_zs, q_angle, q_rho,
+          q_fins, q_cyl} = t3_ctx;
+  wire q_ovf = (q_typ[2] & |t3_sat_q) | t3_ovf_roc_q;
+
+  // ===============================================================================================
+  // Tr: the rotations, one per lane; the context rides in lane 0's tag.
+  // ===============================================================================================
+  localparam integer C4W = TagW + 5 + Lanes + LW + 2 * (KF + 1) + R2W + (KF + 2) + LW + 3 * XSW +
+                           AW + CW + 2 + R0W + TurnW + YW + 1;
+  wire [Lanes*CW-1:0] rot_x, rot_y;
+  wire                r_valid;
+  wire [C4W-1:0]      r_ctx;
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_rot
+      wire          vo;
+      wire [AW-1:0] ao;
+      if (m == 0) begin : g_ctl
+        rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(1), .TagW(C4W)) u_rot (
+          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CW +: CW]),
+          .y_i(t3_ry_q[m*CW +: CW]), .angle_i(t3_ra_q[m*AW +: AW]),
+          .tag_i({q_tag, q_typ, q_en, q_y, q_sx, q_sy, q_r2, q_kd, q_ra, q_xs, q_ys, q_zs,
+                  q_angle, q_rho, q_fins, q_cyl, t3_r0, t3_at, t3_ysat_q, q_ovf}),
+          .valid_o(vo), .x_o(rot_x[m*CW +: CW]), .y_o(rot_y[m*CW +: CW]), .angle_o(ao),
+          .tag_o(r_ctx));
+        assign r_valid = vo;
+      end else begin : g_lane
+        wire to;
+        rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(1), .TagW(1)) u_rot (
+          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CW +: CW]),
+          .y_i(t3_ry_q[m*CW +: CW]), .angle_i(t3_ra_q[m*AW +: AW]), .tag_i(1'b0),
+          .valid_o(vo), .x_o(rot_x[m*CW +: CW]), .y_o(rot_y[m*CW +: CW]), .angle_o(ao),
+          .tag_o(to));
+        wire unused_lane = ^{vo, to};
+      end
+      wire unused_ao = ^ao;
+    end
+  endgenerate
+
+  wire [TagW-1:0]  r_tag;
+  wire [4:0]       r_typ;
+  wire [Lanes-1:0] r_en;
+  wire [LW-1:0]    r_y, r_ra;
+  wire [KF:0]      r_sx, r_sy;
+  wire [R2W-1:0]   r_r2;
+  wire [KF+1:0]    r_kd;
+  wire [XSW-1:0]   r_xs, r_ys, r_zs;
+  wire [AW-1:0]    r_angle;
+  wire [CW-1:0]    r_rho;
+  wire             r_fins, r_cyl, r_ovf;
+  wire [R0W-1:0]   r_r0;
+  wire [TurnW-1:0] r_at;
+  wire [YW-1:0]    r_ysat;
+  assign {r_tag, r_typ, r_en, r_y, r_sx, r_sy, r_r2, r_kd, r_ra, r_xs, r_ys, r_zs, r_angle, r_rho,
+          r_fins, r_cyl, r_r0, r_at, r_ysat, r_ovf} = r_ctx;
+
+  // The valid bit after the rotations: vr[k] at k cycles past them.
+  wire [LB-1:0] vr;
+  reg  [LB-1:1] vr_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) vr_q <= {(LB - 1){1'b0}};
+    else         vr_q <= {vr[LB-2:0]};
+  end
+  assign vr = {vr_q, r_valid};
+
+  // ===============================================================================================
+  // Back end: spiral lanes. (u·sx, w·sy) ≫ (KF − G); clamped; squared; r2 − 1 − A² − B² ≥ 0.
+  // ===============================================================================================
+  localparam integer ScPW = CW + KF + 2;
+  wire [Lanes-1:0] sp_bit;
+  wire [Lanes-1:0] sp_en;
+  wire [R2W-1:0]   sp_r2;
+  rpu_indicator_delay #(.W(Lanes + R2W), .D(LSc + 1 + LQ)) u_dl_sp (
+    .clk_i, .valid_i(vr[0]), .d_i({r_en, r_r2}), .d_o({sp_en, sp_r2}));
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_sp
+      wire [ScPW-1:0] pu, pw;
+      wire            v1, v2, t1, t2;
+      rpu_mul #(.AW(CW), .BW(KF + 2), .Signed(1), .TagW(1)) u_su (
+        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_x[m*CW +: CW]), .b_i({1'b0, r_sx}),
+        .tag_i(1'b0), .valid_o(v1), .p_o(pu), .tag_o(t1));
+      rpu_mul #(.AW(CW), .BW(KF + 2), .Signed(1), .TagW(1)) u_sw (
+        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_y[m*CW +: CW]), .b_i({1'b0, r_sy}),
+        .tag_i(1'b0), .valid_o(v2), .p_o(pw), .tag_o(t2));
+      // u·sx ≫ (KF − G), SCLW bits; it squares to ≥ 2^(2LW) ≥ r2 (outside) unless it fits LW + 1
+      // bits signed, so only those are squared.
+      wire [SCLW-1:0] su = pu[KF-G +: SCLW];
+      wire [SCLW-1:0] sw = pw[KF-G +: SCLW];
+      wire [SCLW-LW-1:0] hu = su[SCLW-1:LW];
+      wire [SCLW-LW-1:0] hw = sw[SCLW-1:LW];
+      reg  [LW:0] qu_q, qw_q;
+      reg         big_q;
+      always @(posedge clk_i) begin
+        qu_q  <= (&hu | ~|hu) ? su[LW:0] : {(LW + 1){1'b0}};
+        qw_q  <= (&hw | ~|hw) ? sw[LW:0] : {(LW + 1){1'b0}};
+        big_q <= ~((&hu | ~|hu) & (&hw | ~|hw));
+      end
+      wire [2*LW+1:0] uu, ww;
+      wire            v3, v4, big, t4;
+      rpu_mul #(.AW(LW + 1), .BW(LW + 1), .Signed(1), .TagW(1)) u_uu (
+        .clk_i, .rst_ni, .valid_i(vr[LSc+1]), .a_i(qu_q), .b_i(qu_q),
+        .tag_i(big_q), .valid_o(v3), .p_o(uu), .tag_o(big));
+      rpu_mul #(.AW(LW + 1), .BW(LW + 1), .Signed(1), .TagW(1)) u_ww (
+        .clk_i, .rst_ni, .valid_i(vr[LSc+1]), .a_i(qw_q), .b_i(qw_q),
+        .tag_i(1'b0), .valid_o(v4), .p_o(ww), .tag_o(t4));
+      // r2 − 1 − u² − w² ≥ 0 (each square ≤ 2^(2LW): its low SQW bits).
+      wire [2*LW+2:0] diff;
+      rpu_indicator_add3 #(.W(2 * LW + 3), .NegB(1), .NegC(1), .Cin(1)) u_cmp (
+        .a_i({2'b00, sp_r2}), .b_i({2'b00, uu[SQW-1:0]}), .c_i({2'b00, ww[SQW-1:0]}), .s_o(diff));
+      reg bit_q;
+      always @(posedge clk_i) bit_q <= sp_en[m] & ~big & ~diff[2*LW+2];
+      assign sp_bit[m] = bit_q;
+      wire unused_sp = ^{v1, v2, t1, t2, v3, v4, t4, pu[KF-G-1:0], pw[KF-G-1:0], uu[2*LW+1:SQW],
+                         ww[2*LW+1:SQW]};
+    end
+  endgenerate
+
+  // ===============================================================================================
+  // Back end: snail lanes. P_j = ρ − G_j, G_0 = 0, G_j = j·h_{j−1}, h_j = 2r0 + j·a_turn;
+  // turn m holds the point ⇔ P_m·P_{m+1} + y² < 0.
+  // ===============================================================================================
+  wire [HW-1:0] r0_2 = {{(HW - R0W - 1){r_r0[R0W-1]}}, r_r0, 1'b0};
+  wire [HW-1:0] at_h = {{(HW - TurnW){r_at[TurnW-1]}}, r_at};
+  reg  [Lanes*HW-1:0] sn_h_q;  // h_0 .. h_{Lanes−1}
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_h
+      localparam integer U1 = m != 0 ? 1 : 0;
+      localparam integer U2 = t2_used(m);
+      localparam integer N2 = t2_neg(m);
+      wire [HW-1:0] ha1 = U1 != 0 ? at_h << t1_shift(m) : {HW{1'b0}};
+      wire [HW-1:0] ha2 = U2 != 0 ? at_h << t2_shift(m) : {HW{1'b0}};
+      wire [HW-1:0] h;
+      rpu_indicator_add3 #(.W(HW), .NegB(0), .NegC(N2), .Cin(N2)) u_h (
+        .a_i(r0_2), .b_i(ha1), .c_i(ha2), .s_o(h));
+      always @(posedge clk_i) sn_h_q[m*HW +: HW] <= h;
+    end
+  endgenerate
+  wire [CW-1:0] sn_rho1;
+  rpu_indicator_delay #(.W(CW), .D(1)) u_dl_rho1 (
+    .clk_i, .valid_i(vr[0]), .d_i(r_rho), .d_o(sn_rho1));
+  wire [PJW-1:0] rho_p = {{(PJW - CW){1'b0}}, sn_rho1};
+  reg  [(Lanes+1)*PJW-1:0] sn_p_q;  // P_0 .. P_Lanes
+  generate
+    for (m = 0; m <= Lanes; m = m + 1) begin : g_p
+      if (m == 0) begin : g_p0
+        always @(posedge clk_i) sn_p_q[0 +: PJW] <= rho_p;
+      end else begin : g_pj
+        localparam integer U2 = t2_used(m);
+        localparam integer N2 = t2_neg(m);
+        localparam integer SubC = (U2 != 0 && N2 == 0) ? 1 : 0;
+        wire [HW-1:0]  hp = sn_h_q[(m-1)*HW +: HW];
+        wire [PJW-1:0] hx = {{(PJW - HW){hp[HW-1]}}, hp};
+        wire [PJW-1:0] b1 = hx << t1_shift(m);
+        wire [PJW-1:0] b2 = U2 != 0 ? hx << t2_shift(m) : {PJW{1'b0}};
+        wire [PJW-1:0] pj;
+        rpu_indicator_add3 #(.W(PJW), .NegB(1), .NegC(SubC), .Cin(1 + SubC)) u_p (
+          .a_i(rho_p), .b_i(b1), .c_i(b2), .s_o(pj));
+        always @(posedge clk_i) sn_p_q[m*PJW +: PJW] <= pj;
+      end
+    end
+  endgenerate
+  // ER+3: |P_j|, its sign, P_j ≠ 0.
+  reg [(Lanes+1)*HIW-1:0] sn_u_q;
+  reg [Lanes:0]           sn_neg_q, sn_nz_q;
+  generate
+    for (m = 0; m <= Lanes; m = m + 1) begin : g_abs
+      wire [PJW-1:0] pj  = sn_p_q[m*PJW +: PJW];
+      wire           neg = pj[PJW-1];
+      wire [PJW-1:0] mag = (pj ^ {PJW{neg}}) + {{(PJW - 1){1'b0}}, neg};
+      always @(posedge clk_i) begin
+        sn_u_q[m*HIW +: HIW] <= mag[HIW-1:0];  // |P_j| < 2^(PJW−1)
+        sn_neg_q[m]          <= neg;
+        sn_nz_q[m]           <= |pj;
+      end
+      wire unused_mag = mag[PJW-1];
+    end
+  endgenerate
+  // ER+4: per lane the order of |P_m|, |P_{m+1}| and whether P_m, P_{m+1} differ in sign (both
+  // nonzero); per factor the capped value min(|P|, 2^LW − 1).
+  reg [(Lanes+1)*LW-1:0] sn_cl_q;
+  reg [(Lanes+1)*HIW-1:0] sn_hi_q;
+  reg [Lanes-1:0] sn_lt_q, sn_opp_q;
+  generate
+    for (m = 0; m <= Lanes; m = m + 1) begin : g_cap
+      wire [HIW-1:0] u = sn_u_q[m*HIW +: HIW];
+      always @(posedge clk_i) begin
+        sn_cl_q[m*LW +: LW]   <= |u[HIW-1:LW] ? {LW{1'b1}} : u[LW-1:0];
+        sn_hi_q[m*HIW +: HIW] <= u;
+      end
+      if (m < Lanes) begin : g_ord
+        wire [HIW-1:0] un = sn_u_q[(m+1)*HIW +: HIW];
+        always @(posedge clk_i) begin
+          sn_lt_q[m]  <= u < un;
+          sn_opp_q[m] <= (sn_neg_q[m] ^ sn_neg_q[m+1]) & sn_nz_q[m] & sn_nz_q[m+1];
+        end
+      end
+    end
+  endgenerate
+  // The products min·max (exact after the cap) and y², compared at ER+5+LN.
+  localparam integer NPW = LW + HIW;
+  wire [2*LW-1:0] yy;
+  wire            v_yy, t_yy;
+  rpu_mul #(.AW(LW), .BW(LW), .Signed(1), .TagW(1), .Latency(4 + LN)) u_yy (
+    .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(r_y), .b_i(r_y), .tag_i(1'b0),
+    .valid_o(v_yy), .p_o(yy), .tag_o(t_yy));
+  wire [Lanes-1:0] sn_en;
+  rpu_indicator_delay #(.W(Lanes), .D(4 + LN)) u_dl_sn (
+    .clk_i, .valid_i(vr[0]), .d_i(r_en), .d_o(sn_en));
+  wire [Lanes-1:0] sn_bit;
+  generate
+    for (m = 0; m < Lanes; m = m + 1) begin : g_sn
+      wire [LW-1:0]  lo = sn_lt_q[m] ? sn_cl_q[m*LW +: LW] : sn_cl_q[(m+1)*LW +: LW];
+      wire [HIW-1:0] hi = sn_lt_q[m] ? sn_hi_q[(m+1)*HIW +: HIW] : sn_hi_q[m*HIW +: HIW];
+      wire [NPW-1:0] pr;
+      wire           v5, opp;
+      rpu_mul #(.AW(LW), .BW(HIW), .Signed(0), .TagW(1)) u_pp (
+        .clk_i, .rst_ni, .valid_i(vr[4]), .a_i(lo), .b_i(hi), .tag_i(sn_opp_q[m]),
+        .valid_o(v5), .p_o(pr), .tag_o(opp));
+      // y² ≤ 2^(2LW−2) < 2^NPW: y² < product.
+      reg bit_q;
+      always @(posedge clk_i) bit_q <= sn_en[m] & opp & ({{(NPW - 2 * LW){1'b0}}, yy} < pr);
+      assign sn_bit[m] = bit_q;
+      wire unused_sn = v5;
+    end
+  endgenerate
+  wire unused_yy = ^{v_yy, t_yy};
+
+  // ===============================================================================================
+  // Back end: the ellipsoid and the relief's sums. (x·sx)², (z·sz)² exact; (y·sy)² clamped
+  // (|y·sy| ≥ 2^LW: outside for both, as r2 ≤ 2^(2LW)).
+  // ===============================================================================================
+  reg  [LW:0] ey_q;
+  reg         ey_big_q;
+  wire [XSW-LW-1:0] ys_hi = r_ys[XSW-1:LW];
+  always @(posedge clk_i) begin
+    ey_q     <= (&ys_hi | ~|ys_hi) ? r_ys[LW:0] : {(LW + 1){1'b0}};
+    ey_big_q <= ~(&ys_hi | ~|ys_hi);
+  end
+  wire [2*XSW-1:0] exx, ezz;
+  wire [2*LW+1:0]  eyy;
+  wire             v6, v7, v8, t6, t7, ey_big;
+  rpu_mul #(.AW(XSW), .BW(XSW), .Signed(1), .TagW(1), .Latency(LXY)) u_exx (
+    .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(r_xs), .b_i(r_xs), .tag_i(1'b0),
+    .valid_o(v6), .p_o(exx), .tag_o(t6));
+  rpu_mul #(.AW(XSW), .BW(XSW), .Signed(1), .TagW(1), .Latency(LXY)) u_ezz (
+    .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(r_zs), .b_i(r_zs), .tag_i(1'b0),
+    .valid_o(v7), .p_o(ezz), .tag_o(t7));
+  rpu_mul #(.AW(LW + 1), .BW(LW + 1), .Signed(1), .TagW(1), .Latency(LXY - 1)) u_eyy (
+    .clk_i, .rst_ni, .valid_i(vr[1]), .a_i(ey_q), .b_i(ey_q), .tag_i(ey_big_q),
+    .valid_o(v8), .p_o(eyy), .tag_o(ey_big));
+  wire [R2W-1:0] e_r2;
+  rpu_indicator_delay #(.W(R2W), .D(LXY)) u_dl_er2 (
+    .clk_i, .valid_i(vr[0]), .d_i(r_r2), .d_o(e_r2));
+  // ER+LXY+1: (x·sx)² + (z·sz)²; s²m² = r2 − (y·sy)² and whether it is > 0.
+  wire [LHW-1:0]  lhs   = {1'b0, exx[LHW-2:0]} + {1'b0, ezz[LHW-2:0]};  // each < 2^(2LW+4)
+  wire [SQW:0]    d2s   = {1'b0, e_r2} - {1'b0, eyy[SQW-1:0]};
+  wire [SQW:0]    d2m1  = {1'b0, e_r2} + ~{1'b0, eyy[SQW-1:0]};     // r2 − (y·sy)² − 1
+  reg  [LHW-1:0]  e_lhs_q;
+  reg  [D2W-1:0]  e_d2_q;
+  reg             e_d2pos_q, e_big_q;
+  reg  [R2W-1:0]  e_r2_q;
+  reg  [SQW-1:0]  e_yy_q;
+  always @(posedge clk_i) begin
+    e_lhs_q   <= lhs;
+    e_d2_q    <= d2s[D2W-1:0];  // only used when 0 < s²m² ≤ 2^(2LW)
+    e_d2pos_q <= ~ey_big & ~d2m1[SQW];
+    e_big_q   <= ey_big;
+    e_r2_q    <= e_r2;
+    e_yy_q    <= eyy[SQW-1:0];
+  end
+  // ER+LXY+2: the ellipsoid: r2 − 1 − lhs − (y·sy)² ≥ 0.
+  localparam integer EDW = LHW + 2;
+  wire [EDW-1:0] ediff;
+  rpu_indicator_add3 #(.W(EDW), .NegB(1), .NegC(1), .Cin(1)) u_ell (
+    .a_i({{(EDW - R2W){1'b0}}, e_r2_q}), .b_i({2'b00, e_lhs_q}),
+    .c_i({{(EDW - SQW){1'b0}}, e_yy_q}), .s_o(ediff));
+  reg el_bit_q;
+  always @(posedge clk_i) el_bit_q <= ~e_big_q & ~ediff[EDW-1];
+  wire unused_e = ^{v6, v7, v8, t6, t7, exx[2*XSW-1:LHW-1], ezz[2*XSW-1:LHW-1], eyy[2*LW+1:SQW],
+                    d2s[SQW:D2W]};
+
+  // ===============================================================================================
+  // Back end: the relief. k' = kd + y1 + y2 (lanes 0 and 1); k2 = floor(k'²·2^-KF);
+  // rhs = floor(k2·s²m²·2^-KF) against lhs = (x·sx)² + (z·sz)² (in the output stage).
+  // ===============================================================================================
+  wire [KW-1:0] kk;
+  rpu_indicator_add3 #(.W(KW), .NegB(0), .NegC(0), .Cin(0)) u_k (
+    .a_i({{(KW - KF - 2){r_kd[KF+1]}}, r_kd}),
+    .b_i({{(KW - CW){rot_y[0*CW + CW-1]}}, rot_y[0*CW +: CW]}),
+    .c_i({{(KW - CW){rot_y[1*CW + CW-1]}}, rot_y[1*CW +: CW]}), .s_o(kk));
+  reg [KW-1:0] re_k_q;
+  always @(posedge clk_i) re_k_q <= kk;
+  wire [2*KW-1:0] k2p;
+  wire            v9, t9;
+  rpu_mul #(.AW(KW), .BW(KW), .Signed(1), .TagW(1), .Latency(TKD - 1)) u_kk (
+    .clk_i, .rst_ni, .valid_i(vr[1]), .a_i(re_k_q), .b_i(re_k_q), .tag_i(1'b0),
+    .valid_o(v9), .p_o(k2p), .tag_o(t9));
+  wire [K2W-1:0] k2 = k2p[KF +: K2W];  // k'² < 2^(2KW−2)
+  wire [D2W-1:0] re_d2;
+  rpu_indicator_delay #(.W(D2W), .D(TKD - LXY - 1)) u_dl_d2 (
+    .clk_i, .valid_i(vr[LXY+1]), .d_i(e_d2_q), .d_o(re_d2));
+  wire [K2W+D2W-1:0] rhp;
+  wire               v10, t10;
+  rpu_mul #(.AW(K2W), .BW(D2W), .Signed(0), .TagW(1), .Latency(BLast - TKD)) u_kd2 (
+    .clk_i, .rst_ni, .valid_i(vr[TKD]), .a_i(k2), .b_i(re_d2), .tag_i(1'b0),
+    .valid_o(v10), .p_o(rhp), .tag_o(t10));
+  wire [RHW-1:0] rhs = rhp[KF +: RHW];
+  wire [LHW-1:0] re_lhs;
+  wire           re_d2pos;
+  rpu_indicator_delay #(.W(LHW + 1), .D(BLast - LXY - 1)) u_dl_lhs (
+    .clk_i, .valid_i(vr[LXY+1]), .d_i({e_lhs_q, e_d2pos_q}), .d_o({re_lhs, re_d2pos}));
+  localparam integer CmpW = (RHW > LHW ? RHW : LHW) + 1;
+  wire re_in = re_d2pos & ({{(CmpW - LHW){1'b0}}, re_lhs} < {{(CmpW - RHW){1'b0}}, rhs});
+  wire unused_re = ^{v9, t9, v10, t10, k2p[KF-1:0], k2p[2*KW-1:KF+K2W], rhp[KF-1:0]};
+
+  // ===============================================================================================
+  // Back end: the rocket. r = a − Y + (fins ? (Y rotated by 5ψ).y : 0); ρ < r.
+  // ===============================================================================================
+  wire [RW-1:0] ro_y  = r_cyl ? {RW{1'b0}} : {{(RW - YW){r_ysat[YW-1]}}, r_ysat};
+  wire [RW-1:0] ro_ys = r_fins ? {{(RW - CW){rot_y[CW-1]}}, rot_y[0 +: CW]} : {RW{1'b0}};
+  wire [RW-1:0] ro_r;
+  rpu_indicator_add3 #(.W(RW), .NegB(1), .NegC(0), .Cin(1)) u_ro (
+    .a_i({{(RW - LW){r_ra[LW-1]}}, r_ra}), .b_i(ro_y), .c_i(ro_ys), .s_o(ro_r));
+  reg [RW-1:0] ro_r_q;
+  always @(posedge clk_i) ro_r_q <= ro_r;
+  wire [RW:0] ro_d = {{(RW + 1 - CW){1'b0}}, sn_rho1} - {ro_r_q[RW-1], ro_r_q};
+  reg ro_bit_q;
+  always @(posedge clk_i) ro_bit_q <= ro_d[RW];
+
+  // ===============================================================================================
+  // Output: each type's bit delayed to the last stage; the trace fields; registered.
+  // ===============================================================================================
+  wire             o_el, o_ro;
+  wire [Lanes-1:0] o_sp, o_sn;
+  rpu_indicator_delay #(.W(1), .D(BLast - BEl)) u_dl_oel (
+    .clk_i, .valid_i(vr[BEl]), .d_i(el_bit_q), .d_o(o_el));
+  rpu_indicator_delay #(.W(Lanes), .D(BLast - BSp)) u_dl_osp (
+    .clk_i, .valid_i(vr[BSp]), .d_i(sp_bit), .d_o(o_sp));
+  rpu_indicator_delay #(.W(Lanes), .D(BLast - BSn)) u_dl_osn (
+    .clk_i, .valid_i(vr[BSn]), .d_i(sn_bit), .d_o(o_sn));
+  rpu_indicator_delay #(.W(1), .D(BLast - BRo)) u_dl_oro (
+    .clk_i, .valid_i(vr[BRo]), .d_i(ro_bit_q), .d_o(o_ro));
+  localparam integer COW = TagW + 5 + AW + CW + 1;
+  wire [TagW-1:0] o_tag;
+  wire [4:0]      o_typ;
+  wire [AW-1:0]   o_angle;
+  wire [CW-1:0]   o_rho;
+  wire            o_ovf;
+  rpu_indicator_delay #(.W(COW), .D(BLast)) u_dl_out (
+    .clk_i, .valid_i(vr[0]), .d_i({r_tag, r_typ, r_angle, r_rho, r_ovf}),
+    .d_o({o_tag, o_typ, o_angle, o_rho, o_ovf}));
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_o <= 1'b0;
+    else         valid_o <= vr[BLast];
+  end
+  // Loaded only with a valid point.
+  always @(posedge clk_i) if (vr[BLast]) begin
+    inside_o      <= (o_typ[0] & o_el) | (o_typ[1] & re_in) | (o_typ[2] & |o_sp) |
+                     (o_typ[3] & |o_sn) | (o_typ[4] & o_ro);
+    turn_inside_o <= ({Lanes{o_typ[2]}} & o_sp) | ({Lanes{o_typ[3]}} & o_sn);
+    angle_o       <= o_typ[0] || o_typ == 5'b0 ? {AW{1'b0}} : o_angle;
+    rho_o         <= o_typ[2] || o_typ[3] || o_typ[4] ? o_rho : {CW{1'b0}};
+    ovf_o         <= o_ovf;
+    tag_o         <= o_tag;
+  end
+endmodule
+
+`default_nettype wire

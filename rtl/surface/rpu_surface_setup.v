@@ -1,0 +1,990 @@
+// rpu_surface_setup: the surface setup unit, twin of `rpu::ref::surface_setup(p, eye, v̂, s, piece)`
+// (ref/model/surface/rpu_surface_setup.{h,cpp}; formats: docs/fixed-point.md, "Surfaces"; the contract:
+// docs/surfaces.md, "Ranges"). One work item is (pixel ray, surface, piece index):
+//   sphere      pred1, A, B = rpu_sphere on the bounding sphere (c0, R²), d = 0 (α = β = 0)
+//   la, lb      floor(M·(X − origin)·2^-s) for X = A, B: exact products (rpu_mul), one
+//               arithmetic shift by s = to_local_s, saturated to LW bits (flagged under pred1)
+//   slab        (ellipsoid, relief ellipsoid, rocket) lo, hi = the entry and exit of
+//               y_min ≤ y ≤ y_max along la → lb, each clamped to [0, 1]: 0 when num ≤ 0, 1 when
+//               num ≥ den = |lb.y − la.y|, else udiv(num·2^SF, den), SF + 1 quotient bits
+//               (the twin's SF bits give the same floor: num < den); dy = 0: [0, 1] or [0, 0]
+//   cuts        (spiral, snail) where f_x = x and f_e = x·end_cos − z·end_sin (exact) change
+//               their sign bit from la to lb: udiv(|fA|·2^SF, |fA| + |fB|), SF + 1 bits; f_e
+//               only when end_angle ≠ 0
+//   pieces      the non-empty intervals between 0, the sorted cuts and 1 (slab: [lo, hi]);
+//               piece_i selects one; pieces_o counts them (0 without pred1)
+//   A', B' − A' A + floor((B − A)·s_lo·2^-SF), the same at s_hi, the difference; likewise on
+//               la → lb (lA', lB' − lA')
+//   branch      x_negative: the piece's side of x = 0 (A's side if the piece ends at or before
+//               the cut, else B's); last_turn = end ≠ 0 ∧ (end < ½ turn ? x ≥ 0 ∧ f_e < 0 :
+//               x ≥ 0 ∨ f_e < 0) with f_e's side chosen the same way; 0 for the slab types.
+// The two dividers are shared by type: divider 1 takes the slab's lo or the x = 0 cut, divider 2
+// the slab's hi or the end-plane cut (the widest denominator, LW + KF + 3 bits).
+// ovf_o mirrors the twin's sticky flag: the sphere unit's flag, and the saturation of la or lb
+// when pred1 holds. When piece_valid_o is 0, s_lo_o, s_hi_o, a_o, ab_o, la_o, lab_o,
+// x_negative_o and last_turn_o are don't-care (the twin leaves them zero).
+//
+// Ports. Vectors are flattened {z, y, x}, each component two's complement. The descriptor fields
+// are SurfaceDesc's (ref/model/descriptors.h), all sampled with valid_i:
+//   c0_i, r2_i      bound.c0 (LSB), bound.R2 (LSB², unsigned)
+//   origin_i        LSB
+//   to_local_i      M, row-major: entry M[r][c] (k = 3r + c) at bits [k·MantW +: MantW], signed
+//   to_local_s_i    the block shift s, unsigned 0..127 (the compiler's is 4..CW+8)
+//   type_i          scene::SurfaceType: 0 ellipsoid, 1 relief, 2 spiral, 3 snail, 4 rocket
+//   y_min_i, y_max_i  llsb, signed LW bits (slab types)
+//   end_angle_i     binary angle, AW bits; end_cos_i, end_sin_i Q(1.KF) signed KF + 2 bits
+//   piece_i         the requested piece, 0..2 (3 is never valid)
+// Outputs: s_lo_o, s_hi_o Q(1.SF) unsigned SF + 1 bits; a_o LSB; ab_o B' − A' (CW + 1 bits);
+// la_o lA' (LW bits); lab_o lB' − lA' (LW + 1 bits). KF = LW, SF = MantW = LW + 2.
+//
+// The descriptor waits in a FIFO (rpu_fifo, 2^FifoLog2 ≥ Ls entries: 64, which Yosys puts in
+// LUT RAM; first-word fall-through, so the head is at its output when the sphere unit delivers
+// that item) instead of riding the sphere unit's 57 stages in shift registers; from there the
+// context rides in the multipliers' and dividers' tags. The sphere unit's α, β tail (its
+// (A − p1)·d products and two rpu_chord, 11 of its cycles) still runs: with d = 0 its products
+// fold to zero in synthesis, but its stages and latency remain.
+// Pipeline (one item per cycle, no stall; every product an rpu_mul, rpu_mul_latency.vh):
+//   Ls       rpu_sphere (d = 0)                             57 at the defaults
+//   1        q = X − origin for A and B
+//   L1       q_c · M[r][c]                   rpu_mul (CW+1) × MW: 18, 3 cycles at the defaults
+//   1        the row sums (carry-save + one adder)
+//   1        shift by 8·s[6:3]
+//   1        shift by s[2:0]
+//   1        saturation to LW bits: la, lb
+//   L2       la.x·cos, la.z·sin, lb.x·cos, lb.z·sin   rpu_mul LW × (KF+2): 4, 3 cycles
+//   1        f_e = x·cos − z·sin; slab differences; |la.x|, |lb.x|; lb − la
+//   1        |f_e|; the slab's numerators and denominator chosen by the sign of dy;
+//            |la.x| + |lb.x|
+//   1        the divider operands (by type); |feA| + |feB|; the slab's clamp tests
+//   SF+1     two rpu_div                                    27 at the defaults
+//   1        the clamped bounds; their order and equality tests
+//   1        the pieces, the selected one
+//   L3       (B − A)_k·s, (lb − la)_k·s at s_lo and s_hi  rpu_mul: 12, 3 cycles (the branch
+//            bits in a parallel delay line)
+//   1        A', B', lA', lB'
+//   1        B' − A', lB' − lA'; outputs registered
+// Latency = Ls + 1 + L1 + 4 + L2 + 3 + (SF + 1) + 2 + L3 + 2 cycles (105 at the defaults;
+// ref::surface_setup_latency). No stage has two wide carry chains in series.
+// No backpressure inside (the enclosing top reserves room).
+`default_nettype none
+
+module rpu_surface_setup #(
+  parameter integer CoordW  = 24,  // CW: signed width of positions, LSB (12..40)
+  parameter integer DirFrac = 24,  // FV: fraction bits of the ray direction v̂, Q(2.FV) (8..40)
+  parameter integer TFrac   = 24,  // the sphere unit's α, β format (8..48; unused values, d = 0)
+  parameter integer InvW    = 18,  // the sphere unit's 1/L² mantissa width (8..40; sets its latency)
+  parameter integer SqrtW   = 0,   // widest radicand of the sphere unit's root; 0 = exact (16..126)
+  parameter integer SurfW   = 24,  // LW: signed width of surface-local coordinates, llsb (16..36)
+  parameter integer AngleW  = 20,  // AW: bits of a binary angle (12..32)
+  parameter integer TagW    = 1,   // side-band bits carried with each item (>= 1)
+  // Derived (do not override).
+  parameter integer DirW   = DirFrac + 2,     // v̂: Q(2.FV)
+  parameter integer DiffW  = CoordW + 1,      // B − A, X − origin
+  parameter integer R2W    = 2 * CoordW + 1,  // R²
+  parameter integer MantW  = SurfW + 2,       // MW: the entries of M, signed
+  parameter integer ConstW = SurfW + 2,       // end_cos, end_sin: Q(1.KF), KF = LW, signed
+  parameter integer SW     = SurfW + 3,       // s: Q(1.SF), SF = LW + 2, unsigned
+  parameter integer LDiffW = SurfW + 1        // lb − la
+) (
+  input  wire                 clk_i,
+  input  wire                 rst_ni,
+  input  wire                 valid_i,
+  input  wire [3*CoordW-1:0]  eye_i,         // h, LSB
+  input  wire [3*DirW-1:0]    vhat_i,        // v̂, Q(2.FV)
+  input  wire [3*CoordW-1:0]  c0_i,          // bounding-sphere centre, LSB
+  input  wire [R2W-1:0]       r2_i,          // bounding-sphere radius², LSB², unsigned
+  input  wire [3*CoordW-1:0]  origin_i,      // LSB
+  input  wire [9*MantW-1:0]   to_local_i,    // M, row-major, signed entries
+  input  wire [6:0]           to_local_s_i,  // unsigned
+  input  wire [2:0]           type_i,        // scene::SurfaceType
+  input  wire [SurfW-1:0]     y_min_i,       // llsb, signed
+  input  wire [SurfW-1:0]     y_max_i,       // llsb, signed
+  input  wire [AngleW-1:0]    end_angle_i,   // binary angle
+  input  wire [ConstW-1:0]    end_cos_i,     // Q(1.KF), signed
+  input  wire [ConstW-1:0]    end_sin_i,     // Q(1.KF), signed
+  input  wire [1:0]           piece_i,       // 0..2
+  input  wire [TagW-1:0]      tag_i,
+  output wire                 valid_o,
+  output wire                 pred1_o,       // the bounding sphere is met in front of the eye
+  output wire                 piece_valid_o, // ... and piece_i exists (the twin's `valid`)
+  output wire [1:0]           pieces_o,      // non-empty pieces of the pair (0..3)
+  output wire [SW-1:0]        s_lo_o,        // Q(1.SF)
+  output wire [SW-1:0]        s_hi_o,        // Q(1.SF)
+  output wire [3*CoordW-1:0]  a_o,           // A', LSB
+  output wire [3*DiffW-1:0]   ab_o,          // B' − A', LSB
+  output wire [3*SurfW-1:0]   la_o,          // lA', llsb
+  output wire [3*LDiffW-1:0]  lab_o,         // lB' − lA', llsb
+  output wire                 x_negative_o,  // spiral, snail: the piece lies in x < 0
+  output wire                 last_turn_o,   // spiral, snail: turn full_turns is in range
+  output wire                 ovf_o,
+  output wire [TagW-1:0]      tag_o
+);
+  localparam integer CW   = CoordW;
+  localparam integer LW   = SurfW;
+  localparam integer MW   = MantW;
+  localparam integer KW   = ConstW;
+  localparam integer SF   = SurfW + 2;
+  localparam integer ShW  = 7;                 // to_local_s
+  localparam integer PmW  = DiffW + MW;        // q_c · M[r][c], exact
+  localparam integer SumW = PmW + 1;           // a row: |.| < 3 · 2^(CW+MW−1)
+  localparam integer PeW  = LW + KW;           // x·cos, z·sin, exact
+  localparam integer FeW  = PeW + 1;           // f_e: |.| ≤ 2^(LW+KW−1); |feA| + |feB| unsigned
+  localparam integer FaW  = FeW - 1;           // |f_e|, unsigned
+  localparam integer Den1W = LW + 1;           // |dy| < 2^LW, |la.x| + |lb.x| ≤ 2^LW
+  localparam integer Den2W = FeW;              // |feA| + |feB| ≤ 2^(FeW−1), or |dy|
+  localparam integer PsW  = DiffW + SW + 1;    // (B − A)_k · s (s as a non-negative signed operand)
+  localparam integer PlW  = LDiffW + SW + 1;   // (lb − la)_k · s
+
+`include "rpu_mul_latency.vh"
+  // rpu_sphere's latency (its header's formula; the FIFO depth below must cover it).
+  localparam integer SpRadW   = 2 * CW + 5;
+  localparam integer SpShift  = (SqrtW == 0 || SpRadW <= SqrtW) ? 0 : (SpRadW - SqrtW + 1) / 2;
+  localparam integer SpStages = (SpRadW - 2 * SpShift + 1) / 2;
+  localparam integer SpL1  = rpu_mul_latency(DiffW, DirW, 1, 24, 17);
+  localparam integer SpL2  = rpu_mul_latency(CW + 6, CW + 6, 1, 24, 17);
+  localparam integer SpL3  = rpu_mul_latency(DirW, CW + 5, 1, 24, 17);
+  localparam integer SpL4  = rpu_mul_latency(DiffW, DiffW, 1, 24, 17);
+  localparam integer SpLCh = rpu_mul_latency(InvW + 1, 2 * DiffW + 2, 1, 24, 17) + 3;
+  localparam integer Ls    = SpStages + 9 + SpL1 + SpL2 + SpL3 + SpL4 + SpLCh;
+  localparam integer L1 = rpu_mul_latency(DiffW, MW, 1, 24, 17);
+  localparam integer L2 = rpu_mul_latency(LW, KW, 1, 24, 17);
+  localparam integer L3W = rpu_mul_latency(DiffW, SW + 1, 1, 24, 17);
+  localparam integer L3L = rpu_mul_latency(LDiffW, SW + 1, 1, 24, 17);
+  localparam integer L3 = L3W > L3L ? L3W : L3L;  // both groups run at this latency
+  // The unit's latency (what the enclosing units count on; ref::surface_setup_latency).
+  /* verilator lint_off UNUSEDPARAM */
+  localparam integer Latency = Ls + 1 + L1 + 4 + L2 + 3 + SW + 2 + L3 + 2;
+  /* verilator lint_on UNUSEDPARAM */
+  // The descriptor FIFO holds every item the sphere unit has in flight (at most Ls).
+  localparam integer FifoLog2 = Ls < 16 ? 4 : Ls < 32 ? 5 : Ls < 64 ? 6 : Ls < 128 ? 7 : 8;
+
+  initial begin
+    if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_surface_setup: CoordW must be in 12..40");
+    if (DirFrac < 8 || DirFrac > 40) $fatal(1, "rpu_surface_setup: DirFrac must be in 8..40");
+    if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_surface_setup: SurfW must be in 16..36");
+    if (AngleW < 12 || AngleW > 32) $fatal(1, "rpu_surface_setup: AngleW must be in 12..32");
+    if (TagW < 1) $fatal(1, "rpu_surface_setup: TagW must be >= 1");
+    if (DirW != DirFrac + 2 || DiffW != CoordW + 1 || R2W != 2 * CoordW + 1 ||
+        MantW != SurfW + 2 || ConstW != SurfW + 2 || SW != SurfW + 3 || LDiffW != SurfW + 1)
+      $fatal(1, "rpu_surface_setup: derived parameters must not be overridden");
+  end
+
+  genvar k, r, e;
+
+  // =============================================================================================
+  // The sphere unit (d = 0: p1, d, inv_m, inv_s tied to zero, so α = β = 0 and never flagged)
+  // and the descriptor FIFO.
+  // =============================================================================================
+  wire               sp_valid;
+  wire               sp_pred1;
+  wire [CW+3:0]      sp_tc;
+  wire [CW+2:0]      sp_hc;
+  wire [3*CW-1:0]    sp_a;
+  wire [3*CW-1:0]    sp_b;
+  wire [3*DiffW-1:0] sp_ab;
+  wire [TFrac+2:0]   sp_alpha;
+  wire [TFrac+2:0]   sp_beta;
+  wire               sp_ovf;
+  wire               sp_tag;
+  rpu_sphere #(
+    .CoordW (CoordW),
+    .DirFrac(DirFrac),
+    .TFrac  (TFrac),
+    .InvW   (InvW),
+    .SqrtW  (SqrtW),
+    .TagW   (1)
+  ) u_sphere (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .valid_i     (valid_i),
+    .eye_i       (eye_i),
+    .vhat_i      (vhat_i),
+    .c0_i        (c0_i),
+    .r2_i        (r2_i),
+    .p1_i        ({3*CW{1'b0}}),
+    .d_i         ({3*DiffW{1'b0}}),
+    .inv_m_i     ({InvW{1'b0}}),
+    .inv_s_i     (7'd0),
+    .tag_i       (1'b0),
+    .valid_o     (sp_valid),
+    .pred1_o     (sp_pred1),
+    .tc_o        (sp_tc),
+    .half_chord_o(sp_hc),
+    .a_o         (sp_a),
+    .b_o         (sp_b),
+    .ab_o        (sp_ab),
+    .alpha_o     (sp_alpha),
+    .beta_o      (sp_beta),
+    .ovf_o       (sp_ovf),
+    .tag_o       (sp_tag)
+  );
+  wire unused_sp = ^{sp_tc, sp_hc, sp_alpha, sp_beta, sp_tag};
+
+  // The descriptor word, field by field.
+  localparam integer OffOrigin = 0;
+  localparam integer OffM      = OffOrigin + 3 * CW;
+  localparam integer OffS      = OffM + 9 * MW;
+  localparam integer OffYMin   = OffS + ShW;
+  localparam integer OffYMax   = OffYMin + LW;
+  localparam integer OffSin    = OffYMax + LW;
+  localparam integer OffCos    = OffSin + KW;
+  localparam integer OffEnd    = OffCos + KW;
+  localparam integer OffType   = OffEnd + AngleW;
+  localparam integer OffPiece  = OffType + 3;
+  localparam integer OffTag    = OffPiece + 2;
+  localparam integer DescW     = OffTag + TagW;
+  wire [DescW-1:0] desc_in;
+  assign desc_in[OffOrigin +: 3*CW] = origin_i;
+  assign desc_in[OffM +: 9*MW]      = to_local_i;
+  assign desc_in[OffS +: ShW]       = to_local_s_i;
+  assign desc_in[OffYMin +: LW]     = y_min_i;
+  assign desc_in[OffYMax +: LW]     = y_max_i;
+  assign desc_in[OffSin +: KW]      = end_sin_i;
+  assign desc_in[OffCos +: KW]      = end_cos_i;
+  assign desc_in[OffEnd +: AngleW]  = end_angle_i;
+  assign desc_in[OffType +: 3]      = type_i;
+  assign desc_in[OffPiece +: 2]     = piece_i;
+  assign desc_in[OffTag +: TagW]    = tag_i;
+
+  wire             desc_wr_ready;
+  wire             desc_valid;
+  wire [DescW-1:0] desc;
+  rpu_fifo #(
+    .Width    (DescW),
+    .Log2Depth(FifoLog2)
+  ) u_desc (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .wr_valid_i(valid_i),
+    .wr_ready_o(desc_wr_ready),
+    .wr_data_i (desc_in),
+    .rd_valid_o(desc_valid),
+    .rd_ready_i(sp_valid),
+    .rd_data_o (desc)
+  );
+`ifndef SYNTHESIS
+  // The FIFO never fills (it holds at most Ls items) and always has the item the sphere unit
+  // delivers.
+  reg live_q;  // out of reset
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) live_q <= 1'b0;
+    else         live_q <= 1'b1;
+  end
+  always @(posedge clk_i) begin
+    if (live_q && valid_i && !desc_wr_ready)
+      $fatal(1, "rpu_surface_setup: descriptor FIFO full");
+    if (live_q && sp_valid && !desc_valid)
+      $fatal(1, "rpu_surface_setup: descriptor FIFO empty at the sphere unit's output");
+  end
+`else
+  wire unused_fifo = ^{desc_wr_ready, desc_valid};
+`endif
+
+  // =============================================================================================
+  // Stage 1: q = X − origin for X = A, B (exact, DiffW bits); the type decoded.
+  // =============================================================================================
+  wire [3*CW-1:0] origin = desc[OffOrigin +: 3*CW];
+  wire [AngleW-1:0] end_angle = desc[OffEnd +: AngleW];
+  wire [2:0]      stype  = desc[OffType +: 3];
+  wire            az     = stype == 3'd2 || stype == 3'd3;  // spiral, snail: azimuth cuts
+  wire            end_nz = |end_angle;
+  wire            end_lo = ~end_angle[AngleW-1];             // end angle below half a turn
+  wire [6*DiffW-1:0] q;  // {B − origin, A − origin}
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : g_q
+      wire signed [DiffW-1:0] ok = {origin[k*CW+CW-1], origin[k*CW +: CW]};
+      wire signed [DiffW-1:0] ak = {sp_a[k*CW+CW-1], sp_a[k*CW +: CW]};
+      wire signed [DiffW-1:0] bk = {sp_b[k*CW+CW-1], sp_b[k*CW +: CW]};
+      assign q[k*DiffW +: DiffW]       = ak - ok;
+      assign q[(3+k)*DiffW +: DiffW]   = bk - ok;
+    end
+  endgenerate
+
+  // The context from here to the local transform's sums:
+  // {tag, piece, az, end_nz, end_lo, cos, sin, y_max, y_min, s, A, AB, pred1, sovf}.
+  localparam integer C1W = TagW + 2 + 3 + 2 * KW + 2 * LW + ShW + 3 * CW + 3 * DiffW + 2;
+  reg [6*DiffW-1:0] q1_q;
+  reg [9*MW-1:0]    m1_q;
+  reg [C1W-1:0]     c1_q;
+  reg               valid1_q;
+  always @(posedge clk_i) begin
+    q1_q <= q;
+    m1_q <= desc[OffM +: 9*MW];
+    c1_q <= {desc[OffTag +: TagW], desc[OffPiece +: 2], az, end_nz, end_lo,
+             desc[OffCos +: KW], desc[OffSin +: KW], desc[OffYMax +: LW], desc[OffYMin +: LW],
+             desc[OffS +: ShW], sp_a, sp_ab, sp_pred1, sp_ovf};
+  end
+
+  // =============================================================================================
+  // The products q_c · M[r][c] for A (e = 0) and B (e = 1), exact.
+  // =============================================================================================
+  wire [18*PmW-1:0] pm;  // product (e, r, c) at index 9e + 3r + c
+  wire              m1_valid;
+  wire [C1W-1:0]    c2;
+  generate
+    for (e = 0; e < 2; e = e + 1) begin : g_me
+      for (r = 0; r < 3; r = r + 1) begin : g_mr
+        for (k = 0; k < 3; k = k + 1) begin : g_mc
+          wire [DiffW-1:0] qk = q1_q[(3*e+k)*DiffW +: DiffW];
+          wire [MW-1:0]    mk = m1_q[(3*r+k)*MW +: MW];
+          wire             v_m;
+          if (e == 0 && r == 0 && k == 0) begin : g_ctl
+            rpu_mul #(.AW(DiffW), .BW(MW), .Signed(1), .TagW(C1W)) u_m (
+              .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid1_q), .a_i(qk), .b_i(mk),
+              .tag_i(c1_q), .valid_o(v_m), .p_o(pm[(9*e+3*r+k)*PmW +: PmW]), .tag_o(c2));
+            assign m1_valid = v_m;
+          end else begin : g_no_ctl
+            wire t_m;
+            rpu_mul #(.AW(DiffW), .BW(MW), .Signed(1), .TagW(1)) u_m (
+              .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid1_q), .a_i(qk), .b_i(mk),
+              .tag_i(1'b0), .valid_o(v_m), .p_o(pm[(9*e+3*r+k)*PmW +: PmW]), .tag_o(t_m));
+            wire unused_ctl = ^{v_m, t_m};
+          end
+        end
+      end
+    end
+  endgenerate
+
+  // =============================================================================================
+  // Stage 2: the row sums (exact in SumW bits: one carry-save step and one adder).
+  // =============================================================================================
+  wire [6*SumW-1:0] rs;  // row (e, r) at index 3e + r
+  generate
+    for (e = 0; e < 2; e = e + 1) begin : g_se
+      for (r = 0; r < 3; r = r + 1) begin : g_sr
+        wire [PmW-1:0]  p0 = pm[(9*e+3*r+0)*PmW +: PmW];
+        wire [PmW-1:0]  p1 = pm[(9*e+3*r+1)*PmW +: PmW];
+        wire [PmW-1:0]  p2 = pm[(9*e+3*r+2)*PmW +: PmW];
+        wire [SumW-1:0] x0 = {p0[PmW-1], p0};
+        wire [SumW-1:0] x1 = {p1[PmW-1], p1};
+        wire [SumW-1:0] x2 = {p2[PmW-1], p2};
+        wire [SumW-1:0] cs_s = x0 ^ x1 ^ x2;
+        wire [SumW-2:0] cs_c = (x0[SumW-2:0] & x1[SumW-2:0]) | (x0[SumW-2:0] & x2[SumW-2:0]) |
+                               (x1[SumW-2:0] & x2[SumW-2:0]);
+        assign rs[(3*e+r)*SumW +: SumW] = cs_s + {cs_c, 1'b0};
+      end
+    end
+  endgenerate
+
+  reg [6*SumW-1:0] v2_q;
+  reg [C1W-1:0]    c2_q;
+  reg              valid2_q;
+  always @(posedge clk_i) begin
+    v2_q <= rs;
+    c2_q <= c2;
+  end
+
+  // =============================================================================================
+  // Stages 3, 4: the arithmetic right shift by s (fixed::truncate), by 8·s[6:3] then by s[2:0]
+  // (a shift of SumW or more leaves the sign).
+  // =============================================================================================
+  wire [ShW-4:0] sh2 = c2_q[2 + 3*DiffW + 3*CW + 3 +: ShW-3];  // s[6:3]
+  wire [6*SumW-1:0] v3;
+  generate
+    for (k = 0; k < 6; k = k + 1) begin : g_sh3
+      wire signed [SumW-1:0] v = v2_q[k*SumW +: SumW];
+      assign v3[k*SumW +: SumW] = v >>> {sh2, 3'b000};
+    end
+  endgenerate
+
+  reg [6*SumW-1:0] v3_q;
+  reg [C1W-1:0]    c3_q;
+  reg              valid3_q;
+  always @(posedge clk_i) begin
+    v3_q <= v3;
+    c3_q <= c2_q;
+  end
+
+  wire [ShW-1:0] sh3 = c3_q[2 + 3*DiffW + 3*CW +: ShW];
+  wire [6*SumW-1:0] v4;
+  generate
+    for (k = 0; k < 6; k = k + 1) begin : g_sh4
+      wire signed [SumW-1:0] v = v3_q[k*SumW +: SumW];
+      assign v4[k*SumW +: SumW] = v >>> sh3[2:0];
+    end
+  endgenerate
+  wire unused_sh3 = ^sh3[ShW-1:3];
+
+  reg [6*SumW-1:0] v4_q;
+  reg [C1W-1:0]    c4_q;
+  reg              valid4_q;
+  always @(posedge clk_i) begin
+    v4_q <= v4;
+    c4_q <= c3_q;
+  end
+
+  // =============================================================================================
+  // Stage 5: saturation to LW bits (fixed::saturate), flagged under pred1: la, lb.
+  // =============================================================================================
+  wire [6*LW-1:0] lsat;  // {lb, la}
+  wire [5:0]      clamped;
+  generate
+    for (k = 0; k < 6; k = k + 1) begin : g_sat
+      wire [SumW-1:0] v   = v4_q[k*SumW +: SumW];
+      wire            fit = (&v[SumW-1:LW-1]) | ~(|v[SumW-1:LW-1]);
+      assign lsat[k*LW +: LW] = fit ? v[LW-1:0] : {v[SumW-1], {(LW-1){~v[SumW-1]}}};
+      assign clamped[k] = ~fit;
+    end
+  endgenerate
+  wire unused_sh4 = ^c4_q[2 + 3*DiffW + 3*CW +: ShW];  // s is spent
+
+  // The context from here to the end-plane products' outputs:
+  // {tag, piece, az, end_nz, end_lo, y_max, y_min, A, AB, pred1, ovf}, then {lb, la}.
+  localparam integer C5W = TagW + 2 + 3 + 2 * LW + 3 * CW + 3 * DiffW + 2;
+  localparam integer C6W = C5W + 6 * LW;
+  wire        pred1_4 = c4_q[1];
+  wire [C5W-1:0] c5 = {c4_q[C1W-1 -: TagW + 5], c4_q[2 + 3*DiffW + 3*CW + ShW +: 2*LW],
+                       c4_q[2 +: 3*DiffW + 3*CW], pred1_4, c4_q[0] | (pred1_4 & (|clamped))};
+  wire [2*KW-1:0] cs4 = c4_q[2 + 3*DiffW + 3*CW + ShW + 2*LW +: 2*KW];  // {cos, sin}
+
+  reg [6*LW-1:0]  l5_q;
+  reg [2*KW-1:0]  cs5_q;
+  reg [C5W-1:0]   c5_q;
+  reg             valid5_q;
+  always @(posedge clk_i) begin
+    l5_q  <= lsat;
+    cs5_q <= cs4;
+    c5_q  <= c5;
+  end
+
+  // =============================================================================================
+  // The end-plane products la.x·cos, la.z·sin, lb.x·cos, lb.z·sin (exact), index 2e + {0, 1}.
+  // =============================================================================================
+  wire [KW-1:0]    sin5 = cs5_q[0 +: KW];
+  wire [KW-1:0]    cos5 = cs5_q[KW +: KW];
+  wire [4*PeW-1:0] pe;
+  wire             m2_valid;
+  wire [C6W-1:0]   c6;
+  generate
+    for (e = 0; e < 2; e = e + 1) begin : g_pe
+      for (k = 0; k < 2; k = k + 1) begin : g_pk
+        // k = 0: x·cos; k = 1: z·sin
+        wire [LW-1:0] xk = l5_q[(3*e + 2*k)*LW +: LW];
+        wire [KW-1:0] ck = k == 0 ? cos5 : sin5;
+        wire          v_p;
+        if (e == 0 && k == 0) begin : g_ctl
+          rpu_mul #(.AW(LW), .BW(KW), .Signed(1), .TagW(C6W)) u_p (
+            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid5_q), .a_i(xk), .b_i(ck),
+            .tag_i({c5_q, l5_q}), .valid_o(v_p), .p_o(pe[(2*e+k)*PeW +: PeW]), .tag_o(c6));
+          assign m2_valid = v_p;
+        end else begin : g_no_ctl
+          wire t_p;
+          rpu_mul #(.AW(LW), .BW(KW), .Signed(1), .TagW(1)) u_p (
+            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid5_q), .a_i(xk), .b_i(ck),
+            .tag_i(1'b0), .valid_o(v_p), .p_o(pe[(2*e+k)*PeW +: PeW]), .tag_o(t_p));
+          wire unused_ctl = ^{v_p, t_p};
+        end
+      end
+    end
+  endgenerate
+
+  // =============================================================================================
+  // Stage E1: f_e = x·cos − z·sin at la and lb; the slab differences; |la.x|, |lb.x|; lb − la.
+  // =============================================================================================
+  // c6 = {tag, piece, az, end_nz, end_lo, y_max, y_min, A, AB, pred1, ovf, lb, la}
+  wire [3*LW-1:0] la6   = c6[0 +: 3*LW];
+  wire [3*LW-1:0] lb6   = c6[3*LW +: 3*LW];
+  wire [C5W-1:0]  ctx6  = c6[6*LW +: C5W];
+  wire [LW-1:0]   ymin6 = ctx6[2 + 3*DiffW + 3*CW +: LW];
+  wire [LW-1:0]   ymax6 = ctx6[2 + 3*DiffW + 3*CW + LW +: LW];
+  wire [2*FeW-1:0] fe;
+  generate
+    for (e = 0; e < 2; e = e + 1) begin : g_fe
+      wire signed [PeW-1:0] pc = pe[(2*e+0)*PeW +: PeW];
+      wire signed [PeW-1:0] ps = pe[(2*e+1)*PeW +: PeW];
+      assign fe[e*FeW +: FeW] = {pc[PeW-1], pc} - {ps[PeW-1], ps};
+    end
+  endgenerate
+  wire signed [LW:0] ya   = {la6[2*LW-1], la6[LW +: LW]};
+  wire signed [LW:0] yb   = {lb6[2*LW-1], lb6[LW +: LW]};
+  wire signed [LW:0] ylo  = {ymin6[LW-1], ymin6};
+  wire signed [LW:0] yhi  = {ymax6[LW-1], ymax6};
+  // {dyp, dyn, n_min, n_max, m_max, m_min}: lb.y − la.y, la.y − lb.y, y_min − la.y, y_max − la.y,
+  // la.y − y_max, la.y − y_min (exact, LW + 1 bits each).
+  wire [6*(LW+1)-1:0] slab = {yb - ya, ya - yb, ylo - ya, yhi - ya, ya - yhi, ya - ylo};
+  wire signed [LW-1:0] xa = la6[0 +: LW];
+  wire signed [LW-1:0] xb = lb6[0 +: LW];
+  // |x| ≤ 2^(LW−1) fits LW bits unsigned (the minimum negates to itself read as unsigned).
+  wire [LW-1:0] xa_abs = xa[LW-1] ? -xa : xa;
+  wire [LW-1:0] xb_abs = xb[LW-1] ? -xb : xb;
+  wire [3*LDiffW-1:0] lab;
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : g_lab
+      wire signed [LDiffW-1:0] ak = {la6[k*LW+LW-1], la6[k*LW +: LW]};
+      wire signed [LDiffW-1:0] bk = {lb6[k*LW+LW-1], lb6[k*LW +: LW]};
+      assign lab[k*LDiffW +: LDiffW] = bk - ak;
+    end
+  endgenerate
+
+  // The context from here to the dividers' inputs:
+  // {tag, piece, az, end_nz, end_lo, A, AB, pred1, ovf}, then {la, lb − la}.
+  localparam integer C7W = TagW + 2 + 3 + 3 * CW + 3 * DiffW + 2;
+  localparam integer CeW = C7W + 3 * LW + 3 * LDiffW;
+  wire [C7W-1:0] c7 = {ctx6[C5W-1 -: TagW + 5], ctx6[0 +: 3*CW + 3*DiffW + 2]};
+  wire unused_y6 = ^{ymin6, ymax6, lb6[2*LW +: LW], la6[2*LW +: LW]};
+
+  reg [2*FeW-1:0]      fe7_q;
+  reg [6*(LW+1)-1:0]   slab7_q;
+  reg [LW-1:0]         xa7_q;
+  reg [LW-1:0]         xb7_q;
+  reg                  xan7_q;
+  reg                  xbn7_q;
+  reg [CeW-1:0]        c7_q;
+  reg                  valid7_q;
+  always @(posedge clk_i) begin
+    fe7_q   <= fe;
+    slab7_q <= slab;
+    xa7_q   <= xa_abs;
+    xb7_q   <= xb_abs;
+    xan7_q  <= xa[LW-1];
+    xbn7_q  <= xb[LW-1];
+    c7_q    <= {c7, la6, lab};
+  end
+
+  // =============================================================================================
+  // Stage E2: |f_e|; the slab's operands chosen by the sign of dy; |la.x| + |lb.x|.
+  // =============================================================================================
+  wire signed [FeW-1:0] fea = fe7_q[0 +: FeW];
+  wire signed [FeW-1:0] feb = fe7_q[FeW +: FeW];
+  wire [FeW-1:0] fea_neg_v = -fea;
+  wire [FeW-1:0] feb_neg_v = -feb;
+  // |f_e| ≤ 2^(FeW−2): FaW bits unsigned.
+  wire [FaW-1:0] fea_abs = fea[FeW-1] ? fea_neg_v[FaW-1:0] : fea[FaW-1:0];
+  wire [FaW-1:0] feb_abs = feb[FeW-1] ? feb_neg_v[FaW-1:0] : feb[FaW-1:0];
+  wire unused_fe = ^{fea_neg_v[FeW-1], feb_neg_v[FeW-1]};
+  wire [LW:0] m_min = slab7_q[0*(LW+1) +: LW+1];
+  wire [LW:0] m_max = slab7_q[1*(LW+1) +: LW+1];
+  wire [LW:0] n_max = slab7_q[2*(LW+1) +: LW+1];
+  wire [LW:0] n_min = slab7_q[3*(LW+1) +: LW+1];
+  wire [LW:0] dyn   = slab7_q[4*(LW+1) +: LW+1];
+  wire [LW:0] dyp   = slab7_q[5*(LW+1) +: LW+1];
+  wire        dy_neg = dyp[LW];
+  wire [LW:0] den_s  = dy_neg ? dyn : dyp;     // |dy|, non-negative
+  wire [LW:0] num_lo = dy_neg ? m_max : n_min;  // y_min − y or y − y_max along the ray
+  wire [LW:0] num_hi = dy_neg ? m_min : n_max;
+  wire        dy_zero = ~(|dyp);
+  wire        in_slab = (n_min[LW] | ~(|n_min)) & ~n_max[LW];  // y_min ≤ la.y ≤ y_max
+  wire [LW:0] den_x  = {1'b0, xa7_q} + {1'b0, xb7_q};          // ≤ 2^LW
+
+  reg [FaW-1:0] fea8_q;
+  reg [FaW-1:0] feb8_q;
+  reg           fean8_q;
+  reg           febn8_q;
+  reg [LW:0]    dens8_q;
+  reg [LW:0]    numlo8_q;
+  reg [LW:0]    numhi8_q;
+  reg           dyz8_q;
+  reg           ins8_q;
+  reg [LW:0]    denx8_q;
+  reg [LW-1:0]  xa8_q;
+  reg           xan8_q;
+  reg           xbn8_q;
+  reg [CeW-1:0] c8_q;
+  reg           valid8_q;
+  always @(posedge clk_i) begin
+    fea8_q   <= fea_abs;
+    feb8_q   <= feb_abs;
+    fean8_q  <= fea[FeW-1];
+    febn8_q  <= feb[FeW-1];
+    dens8_q  <= den_s;
+    numlo8_q <= num_lo;
+    numhi8_q <= num_hi;
+    dyz8_q   <= dy_zero;
+    ins8_q   <= in_slab;
+    denx8_q  <= den_x;
+    xa8_q    <= xa7_q;
+    xan8_q   <= xan7_q;
+    xbn8_q   <= xbn7_q;
+    c8_q     <= c7_q;
+  end
+
+  // =============================================================================================
+  // Stage E3: the divider operands by type; |feA| + |feB|; the slab's clamp tests
+  // (clamped_ratio: 0 when num ≤ 0, 1 when num ≥ den; dy = 0: lo = 0, hi = in_slab).
+  // =============================================================================================
+  // c8 = {tag, piece, az, end_nz, end_lo, A, AB, pred1, ovf, la, lab}
+  wire       az8     = c8_q[CeW-TagW-3];
+  wire       endnz8  = c8_q[CeW-TagW-4];
+  wire [FeW-1:0] den_e = {1'b0, fea8_q} + {1'b0, feb8_q};
+  wire signed [LW+1:0] lo_d = {numlo8_q[LW], numlo8_q} - {1'b0, dens8_q};
+  wire signed [LW+1:0] hi_d = {numhi8_q[LW], numhi8_q} - {1'b0, dens8_q};
+  wire le0_lo = numlo8_q[LW] | ~(|numlo8_q);
+  wire le0_hi = numhi8_q[LW] | ~(|numhi8_q);
+  wire z_lo   = dyz8_q | le0_lo;
+  wire o_lo   = ~z_lo & ~lo_d[LW+1];
+  wire z_hi   = dyz8_q ? ~ins8_q : le0_hi;
+  wire o_hi   = dyz8_q ? ins8_q : ~le0_hi & ~hi_d[LW+1];
+  wire has_x  = xan8_q ^ xbn8_q;
+  wire has_e  = endnz8 & (fean8_q ^ febn8_q);
+  // Operands (when used: 0 < num < den for the slab; |fA| ≤ |fA| + |fB| for a cut).
+  wire [Den1W-1:0] num1 = az8 ? {1'b0, xa8_q} : numlo8_q;
+  wire [Den1W-1:0] den1 = az8 ? denx8_q : dens8_q;
+  wire [Den2W-1:0] num2 = az8 ? {1'b0, fea8_q} : {{(Den2W-LW-1){1'b0}}, numhi8_q};
+  wire [Den2W-1:0] den2 = az8 ? den_e : {{(Den2W-LW-1){1'b0}}, dens8_q};
+
+  // The context through the dividers: {tag, piece, az, end_nz, end_lo, has_x, has_e, x_a < 0,
+  // x_b < 0, f_eA < 0, f_eB < 0, z_lo, o_lo, z_hi, o_hi, A, AB, pred1, ovf, la, lab}.
+  localparam integer CdW = CeW + 10;
+  reg [Den1W-1:0] num1_9_q;
+  reg [Den1W-1:0] den1_9_q;
+  reg [Den2W-1:0] num2_9_q;
+  reg [Den2W-1:0] den2_9_q;
+  reg [CdW-1:0]   c9_q;
+  reg             valid9_q;
+  always @(posedge clk_i) begin
+    num1_9_q <= num1;
+    den1_9_q <= den1;
+    num2_9_q <= num2;
+    den2_9_q <= den2;
+    c9_q     <= {c8_q[CeW-1 -: TagW + 5], has_x, has_e, xan8_q, xbn8_q, fean8_q, febn8_q,
+                 z_lo, o_lo, z_hi, o_hi, c8_q[0 +: CeW - TagW - 5]};
+  end
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      valid1_q <= 1'b0;
+      valid2_q <= 1'b0;
+      valid3_q <= 1'b0;
+      valid4_q <= 1'b0;
+      valid5_q <= 1'b0;
+      valid7_q <= 1'b0;
+      valid8_q <= 1'b0;
+      valid9_q <= 1'b0;
+    end else begin
+      valid1_q <= sp_valid;
+      valid2_q <= m1_valid;
+      valid3_q <= valid2_q;
+      valid4_q <= valid3_q;
+      valid5_q <= valid4_q;
+      valid7_q <= m2_valid;
+      valid8_q <= valid7_q;
+      valid9_q <= valid8_q;
+    end
+  end
+
+  // =============================================================================================
+  // The dividers: 1 takes the slab's lo or the x = 0 cut, 2 the slab's hi or the end-plane cut.
+  // =============================================================================================
+  wire          d1_valid;
+  wire [SW-1:0] q1;
+  wire [CdW-1:0] cd;
+  rpu_div #(
+    .NumW (Den1W + SF),
+    .DenW (Den1W),
+    .QuotW(SW),
+    .TagW (CdW)
+  ) u_div1 (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .valid_i(valid9_q),
+    .num_i  ({num1_9_q, {SF{1'b0}}}),
+    .den_i  (den1_9_q),
+    .tag_i  (c9_q),
+    .valid_o(d1_valid),
+    .quot_o (q1),
+    .tag_o  (cd)
+  );
+  wire          d2_valid;
+  wire [SW-1:0] q2;
+  wire          d2_tag;
+  rpu_div #(
+    .NumW (Den2W + SF),
+    .DenW (Den2W),
+    .QuotW(SW),
+    .TagW (1)
+  ) u_div2 (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .valid_i(valid9_q),
+    .num_i  ({num2_9_q, {SF{1'b0}}}),
+    .den_i  (den2_9_q),
+    .tag_i  (1'b0),
+    .valid_o(d2_valid),
+    .quot_o (q2),
+    .tag_o  (d2_tag)
+  );
+  wire unused_d2 = ^{d2_valid, d2_tag};  // the same pipeline as u_div1
+
+  // =============================================================================================
+  // Stage D1: the bounds: the slab's clamped lo, hi, or the raw cuts; their order and tests.
+  // =============================================================================================
+  // cd = {tag, piece, az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn, z_lo, o_lo, z_hi,
+  //       o_hi, A, AB, pred1, ovf, la, lab}
+  localparam integer CxW = CeW - TagW - 5;  // {A, AB, pred1, ovf, la, lab}
+  localparam [SW-1:0] One = {1'b1, {SF{1'b0}}};
+  wire       azd  = cd[CdW-TagW-3];
+  wire       zlod = cd[CxW + 3];
+  wire       olod = cd[CxW + 2];
+  wire       zhid = cd[CxW + 1];
+  wire       ohid = cd[CxW + 0];
+  wire [SW-1:0] v1 = azd | ~(zlod | olod) ? q1 : zlod ? {SW{1'b0}} : One;
+  wire [SW-1:0] v2 = azd | ~(zhid | ohid) ? q2 : zhid ? {SW{1'b0}} : One;
+
+  reg [SW-1:0]  v1_10_q;
+  reg [SW-1:0]  v2_10_q;
+  reg           lt10_q;
+  reg           eq10_q;
+  reg           z1_10_q;
+  reg           z2_10_q;
+  reg           o1_10_q;
+  reg           o2_10_q;
+  reg [CdW-5:0] c10_q;  // the flags z_lo .. o_hi are spent
+  reg           valid10_q;
+  always @(posedge clk_i) begin
+    v1_10_q <= v1;
+    v2_10_q <= v2;
+    lt10_q  <= v1 < v2;
+    eq10_q  <= v1 == v2;
+    z1_10_q <= ~(|v1);
+    z2_10_q <= ~(|v2);
+    o1_10_q <= v1 == One;
+    o2_10_q <= v2 == One;
+    c10_q   <= {cd[CdW-1 -: TagW + 11], cd[0 +: CxW]};
+  end
+
+  // =============================================================================================
+  // Stage D2: the pieces. Four bounds b0 ≤ b1 ≤ b2 ≤ b3 with empty intervals where the twin has
+  // fewer: slab [lo, hi, hi, hi]; both cuts [0, min, max, 1]; one cut [0, c, 1, 1]; none
+  // [0, 1, 1, 1]. Interval k is a piece iff b_k < b_{k+1}; piece_i selects the piece_i-th one.
+  // =============================================================================================
+  // c10 = {tag, piece, az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn, A, AB, pred1,
+  //        ovf, la, lab}
+  localparam integer OffPred = 3 * LW + 3 * LDiffW + 1;  // pred1 in the {A .. lab} block
+  wire [1:0] piece10 = c10_q[CdW-5-TagW -: 2];
+  wire       az10    = c10_q[CdW-7-TagW];
+  wire       hx10    = c10_q[CxW + 5];
+  wire       he10    = c10_q[CxW + 4];
+  wire       pred10  = c10_q[OffPred];
+  reg [SW-1:0] b0;
+  reg [SW-1:0] b1;
+  reg [SW-1:0] b2;
+  reg [SW-1:0] b3;
+  reg [2:0]    ne;  // ne[k]: b_k < b_{k+1}
+  always @* begin
+    if (!az10) begin
+      b0 = v1_10_q;
+      b1 = v2_10_q;
+      b2 = v2_10_q;
+      b3 = v2_10_q;
+      ne = {2'b00, lt10_q};
+    end else if (hx10 && he10) begin
+      b0 = {SW{1'b0}};
+      b1 = lt10_q ? v1_10_q : v2_10_q;
+      b2 = lt10_q ? v2_10_q : v1_10_q;
+      b3 = One;
+      ne = {lt10_q ? ~o2_10_q : ~o1_10_q, ~eq10_q, lt10_q ? ~z1_10_q : ~z2_10_q};
+    end else if (hx10) begin
+      b0 = {SW{1'b0}};
+      b1 = v1_10_q;
+      b2 = One;
+      b3 = One;
+      ne = {1'b0, ~o1_10_q, ~z1_10_q};
+    end else if (he10) begin
+      b0 = {SW{1'b0}};
+      b1 = v2_10_q;
+      b2 = One;
+      b3 = One;
+      ne = {1'b0, ~o2_10_q, ~z2_10_q};
+    end else begin
+      b0 = {SW{1'b0}};
+      b1 = One;
+      b2 = One;
+      b3 = One;
+      ne = 3'b001;
+    end
+  end
+  wire [1:0] before1 = {1'b0, ne[0]};
+  wire [1:0] before2 = {1'b0, ne[0]} + {1'b0, ne[1]};
+  wire       sel0 = ne[0] & (piece10 == 2'd0);
+  wire       sel1 = ne[1] & (piece10 == before1);
+  wire       sel2 = ne[2] & (piece10 == before2);
+  wire [1:0] count = before2 + {1'b0, ne[2]};
+  wire [SW-1:0] s_lo = sel0 ? b0 : sel1 ? b1 : b2;
+  wire [SW-1:0] s_hi = sel0 ? b1 : sel1 ? b2 : b3;
+
+  // The context from here to the piece products' outputs: {tag, pred1, piece_valid, pieces, s_lo,
+  // s_hi, A, ovf, la}; the branch inputs {az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn,
+  // cut_x, cut_e} for stage D3; the products' operands AB, lab.
+  localparam integer CpW = TagW + 4 + 2 * SW + 3 * CW + 1 + 3 * LW;
+  wire [3*CW-1:0]    a10   = c10_q[OffPred + 1 + 3*DiffW +: 3*CW];
+  wire [3*DiffW-1:0] ab10  = c10_q[OffPred + 1 +: 3*DiffW];
+  wire               ovf10 = c10_q[OffPred - 1];
+  wire [3*LW-1:0]    la10  = c10_q[3*LDiffW +: 3*LW];
+  wire [3*LDiffW-1:0] lab10 = c10_q[0 +: 3*LDiffW];
+
+  reg [SW-1:0]        slo11_q;
+  reg [SW-1:0]        shi11_q;
+  reg [3*DiffW-1:0]   ab11_q;
+  reg [3*LDiffW-1:0]  lab11_q;
+  reg [CpW-1:0]       c11_q;
+  reg [8:0]           br11_q;
+  reg [SW-1:0]        cx11_q;
+  reg [SW-1:0]        ce11_q;
+  reg                 valid11_q;
+  always @(posedge clk_i) begin
+    slo11_q <= s_lo;
+    shi11_q <= s_hi;
+    ab11_q  <= ab10;
+    lab11_q <= lab10;
+    c11_q   <= {c10_q[CdW-5 -: TagW], pred10, pred10 & (sel0 | sel1 | sel2), pred10 ? count : 2'd0,
+                s_lo, s_hi, a10, ovf10, la10};
+    br11_q  <= c10_q[CxW +: 9];  // {az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn}
+    cx11_q  <= v1_10_q;
+    ce11_q  <= v2_10_q;
+  end
+
+  // =============================================================================================
+  // Stage D3 (beside the piece products): the piece's azimuth branch. A piece ending at or before
+  // a cut lies on A's side of that plane, any other on B's.
+  // =============================================================================================
+  wire az11   = br11_q[8];
+  wire endnz11 = br11_q[7];
+  wire endlo11 = br11_q[6];
+  wire hx11   = br11_q[5];
+  wire he11   = br11_q[4];
+  wire xan11  = br11_q[3];
+  wire xbn11  = br11_q[2];
+  wire fean11 = br11_q[1];
+  wire febn11 = br11_q[0];
+  wire x_neg  = hx11 && shi11_q > cx11_q ? xbn11 : xan11;
+  wire e_neg  = he11 && shi11_q > ce11_q ? febn11 : fean11;
+  wire last   = endnz11 & (endlo11 ? ~x_neg & e_neg : ~x_neg | e_neg);
+
+  // The two branch bits wait L3 cycles for the products (L3 >= 2).
+  reg [2*L3-1:0] br_q;
+  always @(posedge clk_i) br_q <= {br_q[2*L3-3:0], az11 & x_neg, az11 & last};
+  wire [1:0] br_out = br_q[2*L3-1 -: 2];
+
+  // =============================================================================================
+  // The piece products (B − A)_k·s and (lb − la)_k·s at s_lo (f = 0) and s_hi (f = 1), exact.
+  // =============================================================================================
+  wire [6*PsW-1:0] ps;   // index 3f + k
+  wire [6*PlW-1:0] pl;
+  wire             m3_valid;
+  wire [CpW-1:0]   c12;
+  generate
+    for (e = 0; e < 2; e = e + 1) begin : g_pf
+      wire [SW:0] sk = {1'b0, e == 0 ? slo11_q : shi11_q};
+      for (k = 0; k < 3; k = k + 1) begin : g_pk3
+        wire v_w, v_l, t_l;
+        if (e == 0 && k == 0) begin : g_ctl
+          rpu_mul #(.AW(DiffW), .BW(SW + 1), .Signed(1), .TagW(CpW), .Latency(L3)) u_w (
+            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid11_q), .a_i(ab11_q[k*DiffW +: DiffW]),
+            .b_i(sk), .tag_i(c11_q), .valid_o(v_w), .p_o(ps[(3*e+k)*PsW +: PsW]), .tag_o(c12));
+          assign m3_valid = v_w;
+        end else begin : g_no_ctl
+          wire t_w;
+          rpu_mul #(.AW(DiffW), .BW(SW + 1), .Signed(1), .TagW(1), .Latency(L3)) u_w (
+            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid11_q), .a_i(ab11_q[k*DiffW +: DiffW]),
+            .b_i(sk), .tag_i(1'b0), .valid_o(v_w), .p_o(ps[(3*e+k)*PsW +: PsW]), .tag_o(t_w));
+          wire unused_ctl = ^{v_w, t_w};
+        end
+        rpu_mul #(.AW(LDiffW), .BW(SW + 1), .Signed(1), .TagW(1), .Latency(L3)) u_l (
+          .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid11_q), .a_i(lab11_q[k*LDiffW +: LDiffW]),
+          .b_i(sk), .tag_i(1'b0), .valid_o(v_l), .p_o(pl[(3*e+k)*PlW +: PlW]), .tag_o(t_l));
+        wire unused_l = ^{v_l, t_l};
+      end
+    end
+  endgenerate
+
+  // =============================================================================================
+  // Stage P1: A' = A + floor((B − A)·s_lo·2^-SF), B' likewise at s_hi; lA', lB' on la → lb.
+  // s ∈ [0, 1], so each end lies between A and B (la and lb): CW (LW) bits hold it exactly.
+  // =============================================================================================
+  // c12 = {tag, pred1, piece_valid, pieces, s_lo, s_hi, A, ovf, la}
+  wire [3*LW-1:0] la12 = c12[0 +: 3*LW];
+  wire [3*CW-1:0] a12  = c12[3*LW + 1 +: 3*CW];
+  wire [6*CW-1:0] wend;  // {B', A'}
+  wire [6*LW-1:0] lend;  // {lB', lA'}
+  generate
+    for (e = 0; e < 2; e = e + 1) begin : g_end
+      for (k = 0; k < 3; k = k + 1) begin : g_endk
+        wire signed [PsW-1:0]  pw  = ps[(3*e+k)*PsW +: PsW];
+        wire signed [PlW-1:0]  plk = pl[(3*e+k)*PlW +: PlW];
+        wire signed [CW-1:0]   ak  = a12[k*CW +: CW];
+        wire signed [LW-1:0]   lk  = la12[k*LW +: LW];
+        // floor(p·2^-SF) has DiffW + 2 (LDiffW + 2) bits; the sums one more.
+        wire signed [DiffW+2:0]  sw = {pw[PsW-1], pw[PsW-1:SF]} + {{(DiffW+3-CW){ak[CW-1]}}, ak};
+        wire signed [LDiffW+2:0] sl = {plk[PlW-1], plk[PlW-1:SF]} +
+                                      {{(LDiffW+3-LW){lk[LW-1]}}, lk};
+        assign wend[(3*e+k)*CW +: CW] = sw[CW-1:0];
+        assign lend[(3*e+k)*LW +: LW] = sl[LW-1:0];
+        wire unused_p = ^{pw[SF-1:0], plk[SF-1:0], sw[DiffW+2:CW], sl[LDiffW+2:LW]};
+      end
+    end
+  endgenerate
+
+  // {tag, pred1, piece_valid, pieces, s_lo, s_hi, ovf, x_negative, last_turn}
+  localparam integer CoW = TagW + 4 + 2 * SW + 1 + 2;
+  reg [6*CW-1:0] wend13_q;
+  reg [6*LW-1:0] lend13_q;
+  reg [CoW-1:0]  c13_q;
+  reg            valid13_q;
+  always @(posedge clk_i) begin
+    wend13_q <= wend;
+    lend13_q <= lend;
+    c13_q    <= {c12[CpW-1 -: TagW + 4 + 2*SW], c12[3*LW], br_out};
+  end
+
+  // =============================================================================================
+  // Stage P2: B' − A', lB' − lA' (exact); the outputs registered.
+  // =============================================================================================
+  wire [3*DiffW-1:0]  wd;
+  wire [3*LDiffW-1:0] ld;
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : g_d
+      wire signed [CW-1:0] a0 = wend13_q[k*CW +: CW];
+      wire signed [CW-1:0] a1 = wend13_q[(3+k)*CW +: CW];
+      wire signed [LW-1:0] l0 = lend13_q[k*LW +: LW];
+      wire signed [LW-1:0] l1 = lend13_q[(3+k)*LW +: LW];
+      assign wd[k*DiffW +: DiffW]   = {a1[CW-1], a1} - {a0[CW-1], a0};
+      assign ld[k*LDiffW +: LDiffW] = {l1[LW-1], l1} - {l0[LW-1], l0};
+    end
+  endgenerate
+
+  reg [3*CW-1:0]     a14_q;
+  reg [3*DiffW-1:0]  ab14_q;
+  reg [3*LW-1:0]     la14_q;
+  reg [3*LDiffW-1:0] lab14_q;
+  reg [CoW-1:0]      c14_q;
+  reg                valid14_q;
+  always @(posedge clk_i) begin
+    a14_q   <= wend13_q[0 +: 3*CW];
+    ab14_q  <= wd;
+    la14_q  <= lend13_q[0 +: 3*LW];
+    lab14_q <= ld;
+    c14_q   <= c13_q;
+  end
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      valid10_q <= 1'b0;
+      valid11_q <= 1'b0;
+      valid13_q <= 1'b0;
+      valid14_q <= 1'b0;
+    end else begin
+      valid10_q <= d1_valid;
+      valid11_q <= valid10_q;
+      valid13_q <= m3_valid;
+      valid14_q <= valid13_q;
+    end
+  end
+
+  // c14 = {tag, pred1, piece_valid, pieces, s_lo, s_hi, ovf, x_negative, last_turn}
+  assign valid_o       = valid14_q;
+  assign tag_o         = c14_q[CoW-1 -: TagW];
+  assign pred1_o       = c14_q[CoW-TagW-1];
+  assign piece_valid_o = c14_q[CoW-TagW-2];
+  assign pieces_o      = c14_q[CoW-TagW-3 -: 2];
+  assign s_lo_o        = c14_q[3 + SW +: SW];
+  assign s_hi_o        = c14_q[3 +: SW];
+  assign ovf_o         = c14_q[2];
+  assign x_negative_o  = c14_q[1];
+  assign last_turn_o   = c14_q[0];
+  assign a_o           = a14_q;
+  assign ab_o          = ab14_q;
+  assign la_o          = la14_q;
+  assign lab_o         = lab14_q;
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,478 @@
+// rpu_texture against its twin rpu::ref::texture_unit on (p0, segment) pairs of the real scene
+// compiler: scenes/ellipse6.json, scenes/polyline9.json and scenes/airfield.json quantised with
+// HwParams (COORD_W / T_FRAC / UNIT_FRAC / INV_W / SQRT_W, defaults otherwise). p0 is the model's
+// ray/plane point (rpu::ref::ray_plane_unit) of a real pixel's ray (rpu::ref::ray_generator):
+// mostly pixels at or beside the projection of a point within about two half widths of a texture
+// curve (many covers = 1 and many pr1 ∧ ¬pr3 just outside the stroke), the rest random pixels.
+// The segments of each p0: every one the classification grid lists there (the renderer's pairs,
+// its grid grown by 2 LSB as in ref_renderer), one from a neighbouring grid cell and one random
+// segment of the scene. A few percent of the pairs take p0 at random over the whole coordinate
+// range (the clamp of (p0 − p1)·d at both ends, the widest products); 1 % also give p0 a non-zero
+// z (the port takes it; the twin uses it); 2 % edit a descriptor field to its port limit with p0
+// near the segment (an arc guide with the largest h: its radicand saturates and sets the overflow
+// bit; inv_s too small: t̂ saturates; w0_2 = 0 and its maximum; a flat guide); 3 % put p0 exactly
+// on (or one LSB off) an end plane and w0_2 exactly at (or one off) |p0 − p1|², |p0 − p2|² or
+// |X − p0|²: the equality cases of every comparison (a quarter of them with p0 far along the
+// plane and w0_2 at |X − p0|²; a third of them with the axes rotated so that z carries data).
+// RPU_VECTORS sets the pair count (default 100,000).
+// Random valid gaps with junk on every data input between pairs; pr1, pr2, pr3, covers, t̂, X,
+// the overflow bit, the tag and the latency compared for every pair, in order.
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "Vrpu_texture.h"
+#include "model/descriptors.h"
+#include "model/units.h"
+#include "scene/camera.h"
+#include "scene/classification_grid.h"
+#include "scene/compiled_scene.h"
+#include "scene/scene_json.h"
+#include "scene/segment.h"
+#include "tb_common.h"
+
+#ifndef RPU_SOURCE_DIR
+#error "RPU_SOURCE_DIR must be defined (see sim/tests/texture/rpu_texture.cmake)"
+#endif
+#ifndef COORD_W
+#define COORD_W 24
+#endif
+#ifndef T_FRAC
+#define T_FRAC 24
+#endif
+#ifndef UNIT_FRAC
+#define UNIT_FRAC 16
+#endif
+#ifndef INV_W
+#define INV_W 18
+#endif
+#ifndef SQRT_W
+#define SQRT_W 0
+#endif
+#ifndef TAG_W
+#define TAG_W 1
+#endif
+
+namespace {
+
+using namespace rpu;
+using sim::i128;
+using sim::u128;
+
+constexpr int kCw = COORD_W, kFt = T_FRAC, kTagW = TAG_W;
+constexpr int kTw = kFt + 3, kDw = kCw + 1, kUw = UNIT_FRAC + 2, kHw = kCw + 5;
+constexpr int kL2w = 2 * kCw + 3, kXw = kCw + 3, kW02w = 2 * kCw + 1, kInvW = INV_W;
+
+ref::HwParams make_params() {
+  ref::HwParams p;
+  p.coord_w = kCw;
+  p.t_frac = kFt;
+  p.unit_frac = UNIT_FRAC;
+  p.inv_w = INV_W;
+  p.sqrt_w = SQRT_W;
+  p.validate();
+  return p;
+}
+
+struct Scene {
+  std::string name;
+  scene::CompiledScene sc;
+  ref::ModelScene m;
+  scene::ClassificationGrid grid;
+};
+
+enum Source { kGrid, kNeighbour, kRandomSeg, kRandomP0, kRandomZ, kPortEdge, kExact };
+const char* const kSourceName[] = {"grid",      "grid neighbour",   "random segment",
+                                   "random p0", "random p0 with z", "descriptor edge",
+                                   "exact boundary"};
+
+struct Item {
+  int scene;
+  size_t seg;
+  ref::SegmentDesc desc;  // the segment's descriptor (edited for the descriptor-edge vectors)
+  int i, j;
+  Source source;
+  ref::WVec3 p0;
+  ref::TextureOut want;
+  bool ovf;
+  std::uint64_t tag;
+  long issued;
+};
+
+i128 random_bits(std::mt19937_64& rng, int width) {
+  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
+  return static_cast<i128>(bits & fixed::max_unsigned(width));
+}
+i128 random_signed(std::mt19937_64& rng, int width) {
+  const i128 u = random_bits(rng, width);
+  return u >= (i128{1} << (width - 1)) ? u - (i128{1} << width) : u;
+}
+
+std::string str(i128 x, i128 y, i128 z) {
+  return "(" + sim::to_string(x) + ", " + sim::to_string(y) + ", " + sim::to_string(z) + ")";
+}
+std::string str(const ref::IVec3& v) { return str(v.x, v.y, v.z); }
+std::string str(const ref::WVec3& v) { return str(v.x, v.y, v.z); }
+
+void drive_segment(Vrpu_texture& top, const ref::SegmentDesc& s) {
+  sim::put_vec3(top.p1_i, s.p1.x, s.p1.y, s.p1.z, kCw);
+  sim::put_vec3(top.d_i, s.d.x, s.d.y, s.d.z, kDw);
+  sim::put(top.l2_i, s.L2, kL2w);
+  sim::put(top.inv_m_i, s.inv_m, kInvW);
+  sim::put(top.inv_s_i, s.inv_s, 7);
+  const ref::GuideDesc& g1 = s.guide[0];
+  const ref::GuideDesc& g2 = s.guide[1];
+  top.mode1_i = static_cast<unsigned>(g1.mode);
+  sim::put(top.h1_i, g1.h, kHw);
+  sim::put(top.a1_i, g1.a, kCw);
+  sim::put(top.b1_i, g1.b, kFt);
+  sim::put_vec3(top.u1_i, g1.u.x, g1.u.y, g1.u.z, kUw);
+  top.mode2_i = static_cast<unsigned>(g2.mode);
+  sim::put(top.h2_i, g2.h, kHw);
+  sim::put(top.a2_i, g2.a, kCw);
+  sim::put(top.b2_i, g2.b, kFt);
+  sim::put_vec3(top.u2_i, g2.u.x, g2.u.y, g2.u.z, kUw);
+  sim::put(top.w0_2_i, s.w0_2, kW02w);
+}
+
+void drive_junk(Vrpu_texture& top, std::mt19937_64& rng) {
+  const auto r = [&](int w) { return random_bits(rng, w); };
+  sim::put_vec3(top.p0_i, r(kCw), r(kCw), r(kCw), kCw);
+  sim::put_vec3(top.p1_i, r(kCw), r(kCw), r(kCw), kCw);
+  sim::put_vec3(top.d_i, r(kDw), r(kDw), r(kDw), kDw);
+  sim::put(top.l2_i, r(kL2w), kL2w);
+  sim::put(top.inv_m_i, r(kInvW), kInvW);
+  sim::put(top.inv_s_i, r(7), 7);
+  top.mode1_i = static_cast<unsigned>(r(2));
+  sim::put(top.h1_i, r(kHw), kHw);
+  sim::put(top.a1_i, r(kCw), kCw);
+  sim::put(top.b1_i, r(kFt), kFt);
+  sim::put_vec3(top.u1_i, r(kUw), r(kUw), r(kUw), kUw);
+  top.mode2_i = static_cast<unsigned>(r(2));
+  sim::put(top.h2_i, r(kHw), kHw);
+  sim::put(top.a2_i, r(kCw), kCw);
+  sim::put(top.b2_i, r(kFt), kFt);
+  sim::put_vec3(top.u2_i, r(kUw), r(kUw), r(kUw), kUw);
+  sim::put(top.w0_2_i, r(kW02w), kW02w);
+  sim::put(top.tag_i, r(kTagW), kTagW);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  auto ctx = sim::make_context("tb_rpu_texture");
+  ctx->commandArgs(argc, argv);
+  auto top = std::make_unique<Vrpu_texture>(ctx.get());
+  const std::uint64_t seed = sim::test_seed("tb_rpu_texture");
+  std::mt19937_64 rng(seed);
+  const ref::HwParams p = make_params();
+  const int kLatency = ref::texture_latency(p);
+
+  std::vector<Scene> scenes;
+  for (const char* name : {"ellipse6", "polyline9", "airfield"}) {
+    Scene s;
+    s.name = name;
+    s.sc = scene::compile_scene(
+        scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json"));
+    s.m = ref::quantize_scene(s.sc, p);
+    s.grid = scene::ClassificationGrid::build(s.sc.texture_segments, 2.0, 2.0 / s.m.norm.scale);
+    for (const ref::SegmentDesc& d : s.m.texture_segments)
+      if (d.w0_2 < 0 || d.w0_2 > static_cast<i128>(fixed::max_unsigned(kW02w))) {
+        std::printf("FAILURE: %s: w0_2 = %s does not fit %d bits\n", name,
+                    sim::to_string(d.w0_2).c_str(), kW02w);
+        return 1;
+      }
+    scenes.push_back(std::move(s));
+  }
+
+  const long count = sim::vector_count(100000);
+  std::deque<Item> items;
+  long per_source[7] = {}, per_scene[3] = {};
+  const auto add_desc = [&](int k, size_t seg, const ref::SegmentDesc& s, int i, int j,
+                            Source src, const ref::WVec3& p0) {
+    fixed::Overflow ovf;
+    Item it{k, seg, s, i, j, src, p0, ref::texture_unit(p, s, p0, ovf), false, 0, 0};
+    it.ovf = ovf.flag;
+    items.push_back(it);
+    ++per_source[src];
+    ++per_scene[k];
+  };
+  const auto add = [&](int k, size_t seg, int i, int j, Source src, const ref::WVec3& p0) {
+    add_desc(k, seg, scenes[static_cast<size_t>(k)].m.texture_segments[seg], i, j, src, p0);
+  };
+  while (static_cast<long>(items.size()) < count) {
+    const int k = static_cast<int>(rng() % scenes.size());
+    const Scene& S = scenes[static_cast<size_t>(k)];
+    const size_t nseg = S.m.texture_segments.size();
+    const unsigned kind = static_cast<unsigned>(rng() % 100);
+    if (kind < 4) {  // p0 anywhere in the coordinate range (z = 0; 1 % with a z as well)
+      const ref::WVec3 p0{random_signed(rng, kCw), random_signed(rng, kCw),
+                          kind == 0 ? random_signed(rng, kCw) : 0};
+      add(k, rng() % nseg, -1, -1, kind == 0 ? kRandomZ : kRandomP0, p0);
+      continue;
+    }
+    if (kind < 6) {
+      // Descriptor fields at their port limits, p0 near the segment: an arc guide with the
+      // largest h (its radicand saturates: the overflow bit), inv_s below the descriptor's
+      // (t̂ saturates), w0_2 at 0 and at its maximum.
+      const size_t seg = rng() % nseg;
+      ref::SegmentDesc s = S.m.texture_segments[seg];
+      const double u = std::uniform_real_distribution<double>(-0.05, 1.05)(rng);
+      const i128 reach = 2 * static_cast<i128>(std::sqrt(static_cast<double>(s.w0_2))) + 2;
+      const auto near = [&](fixed::i64 p1, fixed::i64 d) {
+        return static_cast<i128>(p1) + static_cast<i128>(std::floor(static_cast<double>(d) * u)) +
+               static_cast<i128>(rng() % static_cast<u128>(2 * reach + 1)) - reach;
+      };
+      const ref::WVec3 p0{near(s.p1.x, s.d.x), near(s.p1.y, s.d.y), 0};
+      switch (rng() % 6) {
+        case 5: {
+          // A flat guide as the descriptor compiler quantises one of height h beyond
+          // kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)): h from the threshold to 2^6 times it.
+          ref::GuideDesc& g = s.guide[rng() % 2];
+          const double L = std::sqrt(static_cast<double>(s.L2));
+          const double x = std::uniform_real_distribution<double>(0, 1)(rng);
+          const double h = L * ref::HwParams::kFlatRatio *
+                           (1.0 + 1e-6 + std::ldexp(x, static_cast<int>(rng() % 7)));
+          g.a = static_cast<fixed::i64>(std::llround(static_cast<double>(s.L2) / (2.0 * h)));
+          g.b = static_cast<fixed::i64>(
+              std::llround(std::ldexp(static_cast<double>(s.L2) / (4.0 * h * h), kFt)));
+          g.h = 0;
+          g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
+          break;
+        }
+        case 0:
+        case 1: {
+          ref::GuideDesc& g = s.guide[rng() % 2];
+          g.mode = ref::GuideMode::kArc;
+          g.h = (fixed::i64{1} << kHw) - 1;
+          break;
+        }
+        case 2: s.inv_s = static_cast<int>(rng() % static_cast<unsigned>(s.inv_s)); break;
+        case 3: s.w0_2 = 0; break;
+        default: s.w0_2 = static_cast<i128>(fixed::max_unsigned(kW02w)); break;
+      }
+      const i128 lim = fixed::max_signed(kCw);
+      if (std::abs(static_cast<double>(p0.x)) <= static_cast<double>(lim) &&
+          std::abs(static_cast<double>(p0.y)) <= static_cast<double>(lim))
+        add_desc(k, seg, s, -1, -1, kPortEdge, p0);
+      continue;
+    }
+    if (kind < 9) {
+      // Exact boundaries: p0 on (or one LSB off) the plane through p1 or p2 perpendicular to d
+      // ((p0 − p1)·d = 0 or (p0 − p2)·d = 0: pr1's comparisons and the clamp's ends), and w0_2
+      // equal to |p0 − p1|², |p0 − p2|² or |X − p0|², or one off (pr2's and pr3's ≤).
+      const size_t seg = rng() % nseg;
+      ref::SegmentDesc s = S.m.texture_segments[seg];
+      const fixed::i64 g = std::gcd(std::abs(s.d.x), std::abs(s.d.y));
+      const fixed::i64 sx = -s.d.y / g, sy = s.d.x / g;  // d rotated by 90°, made primitive
+      const double step = std::hypot(static_cast<double>(sx), static_cast<double>(sy));
+      // A quarter of them far along the plane (|p0 − X| up to 2^(CW−2)): w0_2 = |X − p0|² then
+      // tests pr3's comparison and |e|²'s high bits.
+      const bool far = rng() % 4 == 0;
+      const auto m_max =
+          far ? static_cast<fixed::i64>(std::ldexp(1.0, kCw) / step) + 1
+              : static_cast<fixed::i64>(3.0 * std::sqrt(static_cast<double>(s.w0_2)) / step) + 1;
+      const fixed::i64 m = static_cast<fixed::i64>(rng() % static_cast<std::uint64_t>(2 * m_max + 1)) - m_max;
+      const bool at_p2 = rng() % 2;
+      const int off = static_cast<int>(rng() % 5);  // 0..1: on the plane; else ±1 LSB in x or y
+      ref::WVec3 p0{s.p1.x + (at_p2 ? s.d.x : 0) + m * sx, s.p1.y + (at_p2 ? s.d.y : 0) + m * sy, 0};
+      if (off == 2) p0.x += 1;
+      if (off == 3) p0.x -= 1;
+      if (off == 4) p0.y += rng() % 2 ? 1 : -1;
+      const i128 lim = fixed::max_signed(kCw);
+      if (p0.x > lim || p0.x < -lim - 1 || p0.y > lim || p0.y < -lim - 1) continue;
+      const ref::WVec3 r1{p0.x - s.p1.x, p0.y - s.p1.y, p0.z - s.p1.z};
+      const ref::WVec3 r2{r1.x - s.d.x, r1.y - s.d.y, r1.z - s.d.z};
+      fixed::Overflow unused;
+      const ref::WVec3 X = ref::texture_unit(p, s, p0, unused).X;
+      const ref::WVec3 e{X.x - p0.x, X.y - p0.y, X.z - p0.z};
+      const i128 cand[] = {r1.x * r1.x + r1.y * r1.y + r1.z * r1.z,
+                           r2.x * r2.x + r2.y * r2.y + r2.z * r2.z,
+                           e.x * e.x + e.y * e.y + e.z * e.z};
+      // 3: keep the scene's w0_2; far: always |X − p0|²
+      const unsigned pick = far ? 2 : static_cast<unsigned>(rng() % 4);
+      if (pick < 3) {
+        const i128 w = cand[pick] + static_cast<i128>(rng() % 3) - 1;
+        if (w >= 0 && w <= static_cast<i128>(fixed::max_unsigned(kW02w))) s.w0_2 = w;
+      }
+      if (rng() % 3 == 0) {
+        // The axes rotated, (x, y, z) -> (z, x, y), for p0, p1, d and the guide units: every
+        // dot product and |·|² (the boundaries above) is unchanged, but d_z, r1_z, r2_z, X_z and
+        // (X − p0)_z become non-zero (the scenes are flat: z = 0 otherwise).
+        const auto rot = [](auto& v) { v = {v.z, v.x, v.y}; };
+        rot(p0);
+        rot(s.p1);
+        rot(s.d);
+        rot(s.c0);
+        rot(s.guide[0].u);
+        rot(s.guide[1].u);
+      }
+      add_desc(k, seg, s, -1, -1, kExact, p0);
+      continue;
+    }
+    const ref::CameraDesc& cam = S.m.camera;
+    int i = static_cast<int>(rng() % static_cast<unsigned>(cam.width));
+    int j = static_cast<int>(rng() % static_cast<unsigned>(cam.height));
+    if (kind < 80) {
+      // A point within about two half widths of a texture curve, its pixel or a neighbour.
+      const scene::CompiledSegment& cs = S.sc.texture_segments[rng() % nseg];
+      const double u = std::uniform_real_distribution<double>(0, 1)(rng);
+      const Vec3 c = scene::curve_point(cs.geom, u);
+      const Vec3 tan = scene::curve_point(cs.geom, std::min(1.0, u + 1e-3)) -
+                       scene::curve_point(cs.geom, std::max(0.0, u - 1e-3));
+      const Vec3 n = normalize(Vec3{-tan.y, tan.x, 0.0});
+      const double off = std::uniform_real_distribution<double>(-2.2, 2.2)(rng) * cs.half_width;
+      int ci, cj;
+      if (!scene::project_to_pixel(S.sc.camera, c + n * off, ci, cj)) continue;
+      i = std::clamp(ci + static_cast<int>(rng() % 3) - 1, 0, cam.width - 1);
+      j = std::clamp(cj + static_cast<int>(rng() % 3) - 1, 0, cam.height - 1);
+    }
+    const ref::RayGenOut ray = ref::ray_generator(p, cam, i, j);
+    const ref::PlanePoint pp = ref::ray_plane_unit(p, cam, ray.vhat);
+    if (!pp.valid) continue;
+    const double x = static_cast<double>(pp.p0.x) / S.m.norm.scale + S.m.norm.offset.x;
+    const double y = static_cast<double>(pp.p0.y) / S.m.norm.scale + S.m.norm.offset.y;
+    for (auto seg : S.grid.lookup(x, y)) add(k, seg, i, j, kGrid, pp.p0);
+    const double cell = S.grid.cell_size();
+    const int di = static_cast<int>(rng() % 3) - 1, dj = static_cast<int>(rng() % 3) - 1;
+    const auto near = S.grid.lookup(x + di * cell, y + dj * cell);
+    if (near.size() > 0) add(k, near.begin()[rng() % near.size()], i, j, kNeighbour, pp.p0);
+    add(k, rng() % nseg, i, j, kRandomSeg, pp.p0);
+  }
+
+  // What the vectors exercise.
+  long n_covers = 0, n_pr1 = 0, n_pr2 = 0, n_pr3 = 0, n_pr1_not3 = 0, n_edge_out = 0,
+       n_edge_in = 0, n_ovf = 0, n_clamp_lo = 0, n_clamp_hi = 0, n_plane_eq = 0, n_w0_eq = 0;
+  for (const Item& it : items) {
+    const ref::TextureOut& w = it.want;
+    const ref::SegmentDesc& s = it.desc;
+    const ref::WVec3 e{w.X.x - it.p0.x, w.X.y - it.p0.y, w.X.z - it.p0.z};
+    const i128 e2 = e.x * e.x + e.y * e.y + e.z * e.z;
+    n_covers += w.covers;
+    n_pr1 += w.pr1;
+    n_pr2 += w.pr2;
+    n_pr3 += w.pr3;
+    n_pr1_not3 += w.pr1 && !w.pr3;
+    n_edge_out += w.pr1 && !w.pr3 && e2 <= 4 * s.w0_2;  // just outside the stroke
+    n_edge_in += w.pr1 && w.pr3 && 4 * e2 >= s.w0_2;     // just inside it
+    n_ovf += it.ovf;
+    const ref::WVec3 r1{it.p0.x - s.p1.x, it.p0.y - s.p1.y, it.p0.z - s.p1.z};
+    const i128 f1 = r1.x * s.d.x + r1.y * s.d.y + r1.z * s.d.z;
+    n_clamp_lo += f1 < 0;
+    n_clamp_hi += f1 > s.L2;
+    n_plane_eq += f1 == 0 || f1 == s.L2;  // r1·d = 0 or r2·d = r1·d − L2 = 0
+    const ref::WVec3 r2{r1.x - s.d.x, r1.y - s.d.y, r1.z - s.d.z};
+    n_w0_eq += r1.x * r1.x + r1.y * r1.y + r1.z * r1.z == s.w0_2 ||
+               r2.x * r2.x + r2.y * r2.y + r2.z * r2.z == s.w0_2 || e2 == s.w0_2;
+  }
+  if (n_covers < count / 20 || n_edge_out < count / 50 || n_clamp_lo == 0 || n_clamp_hi == 0 ||
+      n_ovf == 0 || n_plane_eq == 0 || n_w0_eq == 0) {
+    std::printf("FAILURE: the vectors are too weak: %ld covers, %ld pr1 ∧ ¬pr3 near the edge, "
+                "%ld / %ld clamped low / high, %ld overflows, %ld / %ld equality cases of %zu\n",
+                n_covers, n_edge_out, n_clamp_lo, n_clamp_hi, n_ovf, n_plane_eq, n_w0_eq,
+                items.size());
+    return 1;
+  }
+
+  sim::reset(*top, *ctx);
+  std::deque<Item> expected;
+  long matched = 0, cycle = 0;
+  std::uint64_t tag = 0;
+  const std::uint64_t tag_mask = kTagW >= 64 ? ~0ull : (1ull << kTagW) - 1;
+  const long total = static_cast<long>(items.size());
+  while (matched < total) {
+    const bool issue = !items.empty() && (rng() % 100) < 85;
+    top->valid_i = issue;
+    if (issue) {
+      Item it = items.front();
+      items.pop_front();
+      sim::put_vec3(top->p0_i, it.p0.x, it.p0.y, it.p0.z, kCw);
+      drive_segment(*top, it.desc);
+      it.tag = tag++ & tag_mask;
+      it.issued = cycle;
+      sim::put(top->tag_i, static_cast<i128>(it.tag), kTagW);
+      expected.push_back(it);
+    } else {
+      drive_junk(*top, rng);
+    }
+    sim::tick(*top, *ctx);
+    ++cycle;
+    if (top->valid_o) {
+      if (expected.empty()) {
+        std::printf("FAILURE cycle %ld: valid_o with no pair outstanding\n", cycle);
+        return 1;
+      }
+      const Item it = expected.front();
+      expected.pop_front();
+      const ref::TextureOut& w = it.want;
+      const i128 t = sim::get_signed(top->t_o, kTw);
+      const ref::WVec3 X{sim::get_comp(top->x_o, 0, kXw), sim::get_comp(top->x_o, 1, kXw),
+                         sim::get_comp(top->x_o, 2, kXw)};
+      const bool pr1 = top->pr1_o, pr2 = top->pr2_o, pr3 = top->pr3_o, covers = top->covers_o,
+                 ovf = top->ovf_o;
+      const std::uint64_t got_tag =
+          static_cast<std::uint64_t>(sim::get_unsigned(top->tag_o, kTagW));
+      const bool ok = pr1 == w.pr1 && pr2 == w.pr2 && pr3 == w.pr3 && covers == w.covers &&
+                      t == w.t && X == w.X && ovf == it.ovf && got_tag == it.tag &&
+                      cycle - it.issued == kLatency;
+      if (!ok) {
+        const Scene& S = scenes[static_cast<size_t>(it.scene)];
+        const ref::SegmentDesc& s = it.desc;
+        std::printf(
+            "FAILURE cycle %ld item %ld: %s segment %zu (%s), pixel (%d, %d)\n"
+            "  inputs   p0 %s p1 %s d %s L2 %s inv_m %lld inv_s %d w0_2 %s\n"
+            "           guide 1 mode %d h %lld a %lld b %lld u %s; guide 2 mode %d h %lld a %lld "
+            "b %lld u %s; tag %llu\n"
+            "  expected pr1 %d pr2 %d pr3 %d covers %d t %s X %s ovf %d latency %d\n"
+            "  actual   pr1 %d pr2 %d pr3 %d covers %d t %s X %s ovf %d latency %ld tag %llu\n",
+            cycle, matched, S.name.c_str(), it.seg, kSourceName[it.source], it.i, it.j,
+            str(it.p0).c_str(), str(s.p1).c_str(), str(s.d).c_str(), sim::to_string(s.L2).c_str(),
+            static_cast<long long>(s.inv_m), s.inv_s, sim::to_string(s.w0_2).c_str(),
+            static_cast<int>(s.guide[0].mode), static_cast<long long>(s.guide[0].h),
+            static_cast<long long>(s.guide[0].a), static_cast<long long>(s.guide[0].b),
+            str(s.guide[0].u).c_str(), static_cast<int>(s.guide[1].mode),
+            static_cast<long long>(s.guide[1].h), static_cast<long long>(s.guide[1].a),
+            static_cast<long long>(s.guide[1].b), str(s.guide[1].u).c_str(),
+            static_cast<unsigned long long>(it.tag), w.pr1, w.pr2, w.pr3, w.covers,
+            sim::to_string(w.t).c_str(), str(w.X).c_str(), it.ovf, kLatency, pr1, pr2, pr3,
+            covers, sim::to_string(t).c_str(), str(X).c_str(), ovf, cycle - it.issued,
+            static_cast<unsigned long long>(got_tag));
+        return 1;
+      }
+      ++matched;
+    }
+    if (cycle > 4 * total + 1000) {
+      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
+      return 1;
+    }
+  }
+  top->valid_i = 0;
+  for (int k = 0; k < kLatency + 4; ++k) {
+    sim::tick(*top, *ctx);
+    ++cycle;
+    if (top->valid_o) {
+      std::printf("FAILURE cycle %ld: spurious valid_o after the last pair\n", cycle);
+      return 1;
+    }
+  }
+  top->final();
+  std::printf("rpu_texture CoordW=%d TFrac=%d UnitFrac=%d InvW=%d SqrtW=%d latency %d: matched %ld "
+              "items in %ld cycles\n"
+              "  scenes: %ld ellipse6, %ld polyline9, %ld airfield; segments: %ld grid, %ld grid "
+              "neighbour, %ld random; %ld random p0 (%ld with z), %ld descriptor edges, %ld "
+              "exact boundaries\n"
+              "  covers %ld, pr1 %ld, pr2 %ld, pr3 %ld, pr1 ∧ ¬pr3 %ld (%ld within 2·w0 of X), "
+              "pr3 with |X − p0| ≥ w0/2 %ld, (p0 − p1)·d clamped low %ld / high %ld, ovf %ld\n"
+              "  equal: (p0 − p1)·d ∈ {0, L2} %ld, w0_2 ∈ {|r1|², |r2|², |X − p0|²} %ld\n",
+              kCw, kFt, UNIT_FRAC, kInvW, SQRT_W, kLatency, matched, cycle, per_scene[0],
+              per_scene[1], per_scene[2], per_source[kGrid], per_source[kNeighbour],
+              per_source[kRandomSeg], per_source[kRandomP0] + per_source[kRandomZ],
+              per_source[kRandomZ], per_source[kPortEdge], per_source[kExact], n_covers, n_pr1, n_pr2, n_pr3,
+              n_pr1_not3, n_edge_out, n_edge_in, n_clamp_lo, n_clamp_hi, n_ovf, n_plane_eq,
+              n_w0_eq);
+  return 0;
+}

@@ -1,0 +1,15 @@
+# rpu_mul: exhaustive at 7 × 6 bits with 3 × 2-bit chunks (9 tiles, a four-level tree), signed
+# and unsigned; corners and 200,000 random products at 51 × 23 unsigned (6 tiles: L²·w of the
+# guide pair) and, opt-in, 28 × 28 signed padded to a latency of 6 and one tile (25 × 18 signed).
+rpu_verilated_test(tb_rpu_mul_7x6s TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
+                   PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2
+                   DEFS A_W=7 B_W=6 SIGNED=1 CHUNK_A=3 CHUNK_B=2)
+rpu_verilated_test(tb_rpu_mul_7x6u TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
+                   PARAMS -GAW=7 -GBW=6 -GSigned=0 -GChunkA=3 -GChunkB=2
+                   DEFS A_W=7 B_W=6 SIGNED=0 CHUNK_A=3 CHUNK_B=2)
+rpu_verilated_test(tb_rpu_mul_51x23u TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
+                   PARAMS -GAW=51 -GBW=23 -GSigned=0 DEFS A_W=51 B_W=23 SIGNED=0)
+rpu_verilated_test(tb_rpu_mul_28x28s EXTRA TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
+                   PARAMS -GAW=28 -GBW=28 -GSigned=1 -GLatency=6
+                   DEFS A_W=28 B_W=28 SIGNED=1 LATENCY=6)
+rpu_verilated_test(tb_rpu_mul_25x18s EXTRA TOP rpu_mul TB tb/common/tb_rpu_mul.cpp)

@@ -1,0 +1,22 @@
+# rpu_top through the co-simulation harness (sim/harness, its Verilated configurations):
+# frames of curves and textures, throughput, backpressure, X seeds; unrolled and iterative.
+add_executable(tb_rpu_top tb/top/tb_rpu_top.cpp)
+target_include_directories(tb_rpu_top PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/tb)
+target_link_libraries(tb_rpu_top PRIVATE rpu_rtl)
+target_compile_options(tb_rpu_top PRIVATE -Wno-unused-parameter)
+target_compile_definitions(tb_rpu_top PRIVATE RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+add_test(NAME tb_rpu_top COMMAND tb_rpu_top frame)
+add_test(NAME tb_rpu_top_airfield COMMAND tb_rpu_top frame --scene airfield --size 48)
+add_test(NAME tb_rpu_top_throughput COMMAND tb_rpu_top throughput)
+add_test(NAME tb_rpu_top_backpressure COMMAND tb_rpu_top backpressure --size 32)
+add_test(NAME tb_rpu_top_xseeds COMMAND ${CMAKE_COMMAND} -DTB=$<TARGET_FILE:tb_rpu_top>
+         -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/x_seeds.cmake)
+add_test(NAME tb_rpu_top_iter COMMAND tb_rpu_top frame --size 24 --config n16_n1_2_iterative)
+# Curves and textures in one frame: the order FIFO merges the two paths' results (the frame
+# mutation testing runs rpu_top's mutants on).
+add_test(NAME tb_rpu_top_mixed COMMAND tb_rpu_top frame --scene curve12+ellipse6 --size 24
+         --config n16_n1_2_iterative)
+add_test(NAME tb_rpu_top_iter_throughput COMMAND tb_rpu_top throughput --config n16_n1_2_iterative)
+set_tests_properties(tb_rpu_top tb_rpu_top_airfield tb_rpu_top_throughput tb_rpu_top_backpressure
+                     tb_rpu_top_xseeds tb_rpu_top_iter tb_rpu_top_iter_throughput tb_rpu_top_mixed
+                     PROPERTIES LABELS rtl)
