@@ -20,43 +20,6 @@ TopWidths::TopWidths(const ref::HwParams& p)
   DepthW = CW + 4 + EgW + 2;
 }
 
-void Bits::set_bit(int k, bool v) {
-  std::uint32_t& w = words_[static_cast<size_t>(k / 32)];
-  const std::uint32_t m = 1u << (k % 32);
-  w = v ? (w | m) : (w & ~m);
-}
-
-u128 Bits::field(int lo, int w) const {
-  u128 u = 0;
-  for (int b = 0; b < w; ++b)
-    if (lo + b < width_ && bit(lo + b)) u |= u128{1} << b;
-  return u;
-}
-
-i128 Bits::field_signed(int lo, int w) const {
-  const u128 u = field(lo, w);
-  if (w >= 128) return static_cast<i128>(u);
-  const u128 sign = u128{1} << (w - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
-
-int Concat::width() const {
-  int w = 0;
-  for (const auto& f : fields_) w += f.width;
-  return w;
-}
-
-Bits Concat::bits() const {
-  Bits b(width());
-  int at = 0;
-  for (auto it = fields_.rbegin(); it != fields_.rend(); ++it) {
-    const u128 u = static_cast<u128>(it->value);
-    for (int k = 0; k < it->width; ++k, ++at)
-      b.set_bit(at, k < 128 ? ((u >> k) & 1) != 0 : it->value < 0);
-  }
-  return b;
-}
-
 bool ItemResult::operator==(const ItemResult& o) const {
   return id == o.id && i == o.i && j == o.j && seg == o.seg && last == o.last &&
          texture == o.texture && primitive == o.primitive && pred1 == o.pred1 && hit == o.hit &&

@@ -1,13 +1,14 @@
 // The co-simulation's view of rpu_top: its ports as plain records (work items in, per-item
 // results and per-pixel results out), the port widths that follow from the hardware
 // parameters, and the bit vectors that carry wide fields between the harnesses and the
-// Verilated models (C++ or SystemC).
+// Verilated models (C++ or SystemC): Bits, bits.h.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "bits.h"
 #include "fixed/fixed.h"
 #include "model/hw_params.h"
 
@@ -30,45 +31,6 @@ struct TopWidths {
 // The parameters of the SystemC build (sim/systemc/CMakeLists.txt passes -GUnrolled=0): the
 // default widths and n, n1 in the iterative form.
 ref::HwParams systemc_params();
-
-// A little-endian bit vector: bit k is bit k%32 of word k/32.
-class Bits {
- public:
-  Bits() = default;
-  explicit Bits(int width) : width_(width), words_(static_cast<size_t>((width + 31) / 32), 0u) {}
-  int width() const { return width_; }
-  const std::vector<std::uint32_t>& words() const { return words_; }
-  std::vector<std::uint32_t>& words() { return words_; }
-  bool bit(int k) const { return (words_[static_cast<size_t>(k / 32)] >> (k % 32)) & 1u; }
-  void set_bit(int k, bool v);
-  // Field [lo, lo + w) as unsigned or sign-extended (w ≤ 128).
-  u128 field(int lo, int w) const;
-  i128 field_signed(int lo, int w) const;
-
- private:
-  int width_ = 0;
-  std::vector<std::uint32_t> words_;
-};
-
-// Packs fields MSB first, like a Verilog concatenation {a, b, c}; values are two's complement.
-class Concat {
- public:
-  void add(i128 value, int width) { fields_.push_back({value, width}); }
-  void add3(i128 x, i128 y, i128 z, int width) {  // {z, y, x}
-    add(z, width);
-    add(y, width);
-    add(x, width);
-  }
-  int width() const;
-  Bits bits() const;
-
- private:
-  struct Field {
-    i128 value;
-    int width;
-  };
-  std::vector<Field> fields_;
-};
 
 // One (pixel, segment) work item as rpu_top takes it.
 struct WorkItem {

@@ -37,13 +37,13 @@ class VerilatedPorts final : public TopPorts {
     top_->rst_ni = 1;
   }
   void write_camera(const Bits& data) override {
-    to_port(top_->cam_data_i, data);
+    put(top_->cam_data_i, data);
     top_->cam_we_i = 1;
     tick();
     top_->cam_we_i = 0;
   }
   void write_segment(std::uint32_t addr, const Bits& data) override {
-    to_port(top_->seg_data_i, data);
+    put(top_->seg_data_i, data);
     top_->seg_addr_i = addr;
     top_->seg_we_i = 1;
     tick();
@@ -77,10 +77,10 @@ class VerilatedPorts final : public TopPorts {
     r.pred1 = top_->res_pred1_o;
     r.hit = top_->res_hit_o;
     r.overflow = top_->res_ovf_o;
-    r.depth = port_s(top_->res_depth_o, w_.DepthW);
-    r.tau = static_cast<std::uint64_t>(port_u(top_->res_tau_o, w_.N));
-    r.t = port_s(top_->res_t_o, w_.TW);
-    for (int c = 0; c < 3; ++c) r.X[c] = port_comp(top_->res_x_o, c, w_.XW);
+    r.depth = get_signed(top_->res_depth_o, w_.DepthW);
+    r.tau = static_cast<std::uint64_t>(get_unsigned(top_->res_tau_o, w_.N));
+    r.t = get_signed(top_->res_t_o, w_.TW);
+    for (int c = 0; c < 3; ++c) r.X[c] = get_comp(top_->res_x_o, c, w_.XW);
     return r;
   }
   PixelResult pixel() const override {
@@ -88,7 +88,7 @@ class VerilatedPorts final : public TopPorts {
     p.i = static_cast<int>(top_->pix_i_o);
     p.j = static_cast<int>(top_->pix_j_o);
     p.hit = top_->pix_hit_o;
-    p.depth = port_s(top_->pix_depth_o, w_.DepthW);
+    p.depth = get_signed(top_->pix_depth_o, w_.DepthW);
     p.primitive = top_->pix_prim_o;
     return p;
   }
