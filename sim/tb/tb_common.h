@@ -1,159 +1,141 @@
-// Shared pieces of the Verilator testbenches: seeds, wide-signal packing, clocking, and the
-// checker's report format (ibex-style: FAILURE with the cycle and the item, or "matched N").
+// The helpers every unit testbench's vector generator shares: the build's hardware parameters,
+// the demo scenes, random values of a given width, a flat guide as the descriptor compiler
+// forms it, and values as text. (The testbench itself: tb_base.h.)
 #pragma once
 
-#include <verilated.h>
-
+#include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <memory>
 #include <random>
 #include <string>
 
-#include "fixed/fixed.h"
+#include "bits.h"
+#include "model/hw_params.h"
+#include "model/units.h"
+#include "scene/compiled_scene.h"
+#include "scene/scene_json.h"
+
+// The hardware parameters a testbench is built with: the macros of its registration line
+// (sim/tests/<subsystem>/*.cmake, DEFS), else the HwParams defaults.
+#ifndef IP_N
+#define IP_N 16
+#endif
+#ifndef IP_N1
+#define IP_N1 2
+#endif
+#ifndef COORD_W
+#define COORD_W 24
+#endif
+#ifndef DIR_FRAC
+#define DIR_FRAC 24
+#endif
+#ifndef T_FRAC
+#define T_FRAC 24
+#endif
+#ifndef UNIT_FRAC
+#define UNIT_FRAC 16
+#endif
+#ifndef EDGE_FRAC
+#define EDGE_FRAC 16
+#endif
+#ifndef INV_W
+#define INV_W 18
+#endif
+#ifndef SQRT_W
+#define SQRT_W 0
+#endif
+#ifndef METRIC
+#define METRIC 0
+#endif
+#ifndef UNROLLED
+#define UNROLLED 1
+#endif
+#ifndef SURF_W
+#define SURF_W 24
+#endif
+#ifndef ANGLE_W
+#define ANGLE_W 20
+#endif
+#ifndef TAG_W
+#define TAG_W 1
+#endif
+#ifndef RPU_SOURCE_DIR
+#error "RPU_SOURCE_DIR must name the source tree (rpu_verilated_test defines it)"
+#endif
 
 namespace rpu::sim {
 
-using fixed::i128;
-using fixed::u128;
-
-// The seed: RPU_SEED from the environment, else a fixed default; always printed.
-inline std::uint64_t test_seed(const char* name, std::uint64_t fallback = 20261121) {
-  const char* env = std::getenv("RPU_SEED");
-  const std::uint64_t seed = env ? std::strtoull(env, nullptr, 0) : fallback;
-  std::printf("%s: seed %llu (set RPU_SEED to reproduce another)\n", name,
-              static_cast<unsigned long long>(seed));
-  return seed;
+inline ref::HwParams tb_params() {
+  ref::HwParams p;
+  p.n = IP_N;
+  p.n1 = IP_N1;
+  p.coord_w = COORD_W;
+  p.dir_frac = DIR_FRAC;
+  p.t_frac = T_FRAC;
+  p.unit_frac = UNIT_FRAC;
+  p.edge_frac = EDGE_FRAC;
+  p.inv_w = INV_W;
+  p.sqrt_w = SQRT_W;
+  p.metric = METRIC == 0 ? ref::Metric::kAbs : ref::Metric::kSquared;
+  p.unrolled = UNROLLED != 0;
+  p.surf_w = SURF_W;
+  p.angle_w = ANGLE_W;
+  p.validate();
+  return p;
 }
 
-// A Verilated context whose registers all start random (every model is built --x-initial
-// unique): a register the reset forgets, or a reset that never comes, shows as a mismatch
-// instead of hiding behind all-zero power-up values. RPU_X_SEED picks the values (printed).
-inline std::unique_ptr<VerilatedContext> make_context(const char* name) {
-  const char* env = std::getenv("RPU_X_SEED");
-  const std::uint64_t seed = env ? std::strtoull(env, nullptr, 0) : 20261122;
-  std::printf("%s: initial register values from x-seed %llu (set RPU_X_SEED for others)\n", name,
-              static_cast<unsigned long long>(seed));
-  auto ctx = std::make_unique<VerilatedContext>();
-  ctx->randReset(2);
-  ctx->randSeed(static_cast<int>(seed & 0x7fffffff));
-  return ctx;
+// A demo scene (scenes/NAME.json), as written or compiled.
+inline scene::Scene demo_scene(const std::string& name) {
+  return scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json");
+}
+inline scene::CompiledScene compiled_demo_scene(const std::string& name) {
+  return scene::compile_scene(demo_scene(name));
 }
 
-// Vector count: RPU_VECTORS from the environment scales the default (opt-in long runs).
-inline long vector_count(long fallback) {
-  const char* env = std::getenv("RPU_VECTORS");
-  return env ? std::strtol(env, nullptr, 0) : fallback;
+// Random values (each draws two 64-bit numbers, then what its name says).
+// `width` random bits (width ≤ 128).
+inline i128 random_bits(std::mt19937_64& rng, int width) {
+  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
+  return static_cast<i128>(low_bits(bits, width));
+}
+// A random two's-complement `width`-bit value.
+inline i128 random_signed(std::mt19937_64& rng, int width) {
+  return sign_extend(static_cast<u128>(random_bits(rng, width)), width);
+}
+// Spread over magnitudes: a random width 1..width first (one more draw), then unsigned bits ...
+inline i128 random_spread(std::mt19937_64& rng, int width) {
+  return random_bits(rng, 1 + static_cast<int>(rng() % static_cast<unsigned>(width)));
+}
+// ... or a signed value of that random width.
+inline i128 random_magnitude(std::mt19937_64& rng, int width) {
+  const int w = 1 + static_cast<int>(rng() % static_cast<unsigned>(width));
+  return random_signed(rng, w);
 }
 
-inline std::string to_string(i128 v) { return fixed::to_decimal(v); }
-
-// Writing a `width`-bit two's-complement value into a Verilator port of any size.
-// Only the port's `width` bits are written: Verilator assumes the bits above a narrow port are
-// zero, so a negative value must not set them (they would leak into the logic).
-inline u128 port_mask(int width) { return width >= 128 ? ~u128{0} : (u128{1} << width) - 1; }
-inline void put(CData& port, i128 v, int width) {
-  port = static_cast<CData>(static_cast<u128>(v) & port_mask(width));
-}
-inline void put(SData& port, i128 v, int width) {
-  port = static_cast<SData>(static_cast<u128>(v) & port_mask(width));
-}
-inline void put(IData& port, i128 v, int width) {
-  port = static_cast<IData>(static_cast<u128>(v) & port_mask(width));
-}
-inline void put(QData& port, i128 v, int width) {
-  port = static_cast<QData>(static_cast<u128>(v) & port_mask(width));
-}
-template <std::size_t N>
-void put(VlWide<N>& port, i128 v, int width) {
-  const u128 u = static_cast<u128>(v);
-  for (std::size_t k = 0; k < N; ++k) {
-    const int lo = static_cast<int>(32 * k);
-    std::uint32_t word = 0;
-    if (lo < 128) word = static_cast<std::uint32_t>(u >> lo);
-    else word = v < 0 ? 0xFFFFFFFFu : 0u;
-    if (lo + 32 > width) word &= width > lo ? (0xFFFFFFFFu >> (lo + 32 - width)) : 0u;
-    port[k] = word;
-  }
+// A flat guide as the descriptor compiler quantises one of height h (in LSB, beyond
+// kFlatRatio·L) on a segment of length² L2: a = L²/2h, b = L²/4h² in Q(0.FT); straight when
+// a rounds to 0.
+inline void set_flat_guide(ref::GuideDesc& g, i128 L2, double h, int t_frac) {
+  g.a = static_cast<std::int64_t>(std::llround(static_cast<double>(L2) / (2.0 * h)));
+  g.b = static_cast<std::int64_t>(
+      std::llround(std::ldexp(static_cast<double>(L2) / (4.0 * h * h), t_frac)));
+  g.h = 0;
+  g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
 }
 
-// Reading a port as an unsigned or a sign-extended `width`-bit value.
-template <class T>
-u128 get_unsigned(const T& port, int width) {
-  const u128 u = static_cast<u128>(port);
-  return width >= 128 ? u : (u & ((u128{1} << width) - 1));
+// Values as text: integers in decimal, vectors (anything with x, y, z) as "(x, y, z)".
+inline std::string str(i128 v) { return fixed::to_decimal(v); }
+template <class V>
+  requires requires(const V& v) { v.x; v.y; v.z; }
+std::string str(const V& v) {
+  std::string s("(");  // appended piecewise (GCC 12 warns falsely on "(" + std::string)
+  s += str(static_cast<i128>(v.x));
+  s += ", ";
+  s += str(static_cast<i128>(v.y));
+  s += ", ";
+  s += str(static_cast<i128>(v.z));
+  s += ")";
+  return s;
 }
-template <std::size_t N>
-u128 get_unsigned(const VlWide<N>& port, int width) {
-  u128 u = 0;
-  for (std::size_t k = 0; k < N && 32 * k < 128; ++k) u |= static_cast<u128>(port[k]) << (32 * k);
-  return width >= 128 ? u : (u & ((u128{1} << width) - 1));
-}
-template <class T>
-i128 get_signed(const T& port, int width) {
-  const u128 u = get_unsigned(port, width);
-  const u128 sign = u128{1} << (width - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
-
-// A 3-component vector packed {z, y, x}, each component `width` bits, into a wide port.
-template <std::size_t N>
-void put_vec3(VlWide<N>& port, i128 x, i128 y, i128 z, int width) {
-  for (std::size_t k = 0; k < N; ++k) port[k] = 0;
-  const i128 comps[3] = {x, y, z};
-  for (int c = 0; c < 3; ++c) {
-    const u128 u = static_cast<u128>(comps[c]);
-    for (int b = 0; b < width; ++b) {
-      const bool bit = b < 128 ? ((u >> b) & 1) != 0 : comps[c] < 0;
-      if (bit) port[static_cast<std::size_t>((c * width + b) / 32)] |= 1u << ((c * width + b) % 32);
-    }
-  }
-}
-inline void put_vec3(QData& port, i128 x, i128 y, i128 z, int width) {
-  const u128 m = (u128{1} << width) - 1;
-  port = static_cast<QData>((static_cast<u128>(x) & m) | ((static_cast<u128>(y) & m) << width) |
-                            ((static_cast<u128>(z) & m) << (2 * width)));
-}
-inline void put_vec3(IData& port, i128 x, i128 y, i128 z, int width) {
-  QData q = 0;
-  put_vec3(q, x, y, z, width);
-  port = static_cast<IData>(q);
-}
-// Component c (0 = x) of a {z, y, x}-packed port, sign-extended.
-template <std::size_t N>
-i128 get_comp(const VlWide<N>& port, int c, int width) {
-  u128 u = 0;
-  for (int b = 0; b < width; ++b) {
-    const int bit = c * width + b;
-    if ((port[static_cast<std::size_t>(bit / 32)] >> (bit % 32)) & 1) u |= u128{1} << b;
-  }
-  const u128 sign = u128{1} << (width - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
-template <class T>
-i128 get_comp(const T& port, int c, int width) {
-  const u128 u = (static_cast<u128>(port) >> (c * width)) & ((u128{1} << width) - 1);
-  const u128 sign = u128{1} << (width - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
-
-// One clock cycle: inputs set before the rising edge, outputs read after it.
-template <class Top>
-void tick(Top& top, VerilatedContext& ctx) {
-  top.clk_i = 0;
-  top.eval();
-  ctx.timeInc(1);
-  top.clk_i = 1;
-  top.eval();
-  ctx.timeInc(1);
-}
-
-template <class Top>
-void reset(Top& top, VerilatedContext& ctx, int cycles = 4) {
-  top.rst_ni = 0;
-  for (int k = 0; k < cycles; ++k) tick(top, ctx);
-  top.rst_ni = 1;
-}
+inline std::string to_string(i128 v) { return str(v); }
 
 }  // namespace rpu::sim

@@ -1,16 +1,14 @@
 // rpu_mul against rpu::ref::mul_unit: every operand pair when AW + BW ≤ 16 (exhaustive), else
 // the corners (0, ±1, the extremes and their neighbours, one-hot and all-ones chunks) and
-// random operands of random magnitude. Random valid gaps and junk on idle cycles; compares the
-// product, the tag and the latency of every item, in order. Then a reset in the middle of traffic
-// (the pipeline full, valid_i high while the reset is low): nothing may come out afterwards
-// except the one operand issued after it (a valid register the reset forgets shows up).
-#include <deque>
-#include <memory>
+// random operands of random magnitude. Then a reset in the middle of traffic (the pipeline full,
+// valid_i high while the reset is low): nothing may come out afterwards except the one operand
+// issued after it (a valid register the reset forgets shows up).
+#include <algorithm>
 #include <vector>
 
 #include "Vrpu_mul.h"
 #include "model/common/rpu_mul.h"
-#include "tb_common.h"
+#include "tb_base.h"
 
 #ifndef A_W
 #define A_W 25
@@ -30,8 +28,6 @@
 #ifndef LATENCY
 #define LATENCY 0
 #endif
-
-namespace {
 
 using namespace rpu;
 using sim::i128;
@@ -69,129 +65,77 @@ std::vector<i128> corners(int w, int chunk) {
   return in;
 }
 
-}  // namespace
-
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_mul");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_mul>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_mul");
-  std::mt19937_64 rng(seed);
-
-  struct Op {
-    i128 a, b;
+  sim::Testbench<Vrpu_mul> tb("tb_rpu_mul", argc, argv);
+  struct Item {
+    i128 a, b, p;
   };
-  std::deque<Op> ops;
+  std::vector<Item> items;
+  const auto add = [&](i128 a, i128 b) { items.push_back({a, b, ref::mul_unit(a, b)}); };
   const bool exhaustive = kAW + kBW <= 16;
   if (exhaustive) {
     for (i128 a = lo(kAW); a <= hi(kAW); ++a)
-      for (i128 b = lo(kBW); b <= hi(kBW); ++b) ops.push_back({a, b});
+      for (i128 b = lo(kBW); b <= hi(kBW); ++b) add(a, b);
   } else {
     for (i128 a : corners(kAW, kChA))
-      for (i128 b : corners(kBW, kChB)) ops.push_back({a, b});
-    const long n = sim::vector_count(200000);
-    for (long k = 0; k < n; ++k) ops.push_back({random_value(rng, kAW), random_value(rng, kBW)});
+      for (i128 b : corners(kBW, kChB)) add(a, b);
+    const long n = tb.vectors(200000);
+    for (long k = 0; k < n; ++k) {
+      const i128 a = random_value(tb.rng, kAW);
+      add(a, random_value(tb.rng, kBW));
+    }
   }
-  const long total = static_cast<long>(ops.size());
 
-  struct Item {
-    Op op;
-    i128 p;
-    std::uint32_t tag;
-    long issued;
+  sim::Stream<Vrpu_mul, Item> s;
+  s.inputs = [](sim::Inputs& in, Vrpu_mul& t, const Item& it) {
+    in("a", t.a_i, it.a, kAW)("b", t.b_i, it.b, kBW);
   };
-  std::deque<Item> expected;
-  sim::reset(*top, *ctx);
-  long cycle = 0, matched = 0;
-  const auto field = [](i128 v, int w) { return static_cast<i128>(static_cast<u128>(v) & fixed::max_unsigned(w)); };
-  while (matched < total) {
-    const bool issue = !ops.empty() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    Op op{random_value(rng, kAW), random_value(rng, kBW)};  // junk unless issued
-    if (issue) {
-      op = ops.front();
-      ops.pop_front();
-    }
-    sim::put(top->a_i, field(op.a, kAW), kAW);
-    sim::put(top->b_i, field(op.b, kBW), kBW);
-    const std::uint32_t tag = static_cast<std::uint32_t>(rng() & 1);
-    top->tag_i = tag;
-    if (issue) expected.push_back({op, ref::mul_unit(op.a, op.b), tag, cycle});
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (expected.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no operand outstanding\n", cycle);
-        return 1;
-      }
-      const Item want = expected.front();
-      expected.pop_front();
-      const int pw = kAW + kBW;
-      const i128 p = kSigned ? sim::get_signed(top->p_o, pw)
-                             : static_cast<i128>(sim::get_unsigned(top->p_o, pw));
-      const long latency = cycle - want.issued;
-      if (p != want.p || top->tag_o != want.tag || latency != kLatency) {
-        std::printf("FAILURE cycle %ld item %ld: a %s b %s\n  expected p %s tag %u latency %d\n"
-                    "  got      p %s tag %u latency %ld\n",
-                    cycle, matched, sim::to_string(want.op.a).c_str(),
-                    sim::to_string(want.op.b).c_str(), sim::to_string(want.p).c_str(), want.tag,
-                    kLatency, sim::to_string(p).c_str(), static_cast<unsigned>(top->tag_o),
-                    latency);
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
+  s.outputs = [](sim::Outputs& o, const Vrpu_mul& t, const Item& it) {
+    o("p", t.p_o, it.p, kAW + kBW);
+  };
+  s.latency = kLatency;
+  s.tag_w = 1;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+
   // A reset with every stage holding an operand and valid_i high during it: the flushed operands
   // must not come out, the next one must (with its latency).
+  Vrpu_mul& top = tb.top();
   for (int k = 0; k < kLatency; ++k) {
-    top->valid_i = 1;
-    sim::tick(*top, *ctx);
+    top.valid_i = 1;
+    tb.tick();
   }
-  top->rst_ni = 0;
-  for (int k = 0; k < 2; ++k) sim::tick(*top, *ctx);
-  top->rst_ni = 1;
-  top->valid_i = 0;
+  top.rst_ni = 0;
+  for (int k = 0; k < 2; ++k) tb.tick();
+  top.rst_ni = 1;
+  top.valid_i = 0;
   for (int k = 0; k < kLatency + 2; ++k) {
-    sim::tick(*top, *ctx);
-    if (top->valid_o) {
-      std::printf("FAILURE: valid_o %d cycles after a reset in traffic (valid_i high before and "
-                  "during the reset, low after)\n", k + 1);
-      return 1;
-    }
+    tb.tick();
+    if (top.valid_o)
+      return tb.fail("valid_o %d cycles after a reset in traffic (valid_i high before and during "
+                     "the reset, low after)", k + 1);
   }
-  {
-    const Op op{hi(kAW), lo(kBW)};
-    top->valid_i = 1;
-    sim::put(top->a_i, field(op.a, kAW), kAW);
-    sim::put(top->b_i, field(op.b, kBW), kBW);
-    top->tag_i = 1;
-    sim::tick(*top, *ctx);
-    top->valid_i = 0;
-    const i128 want = ref::mul_unit(op.a, op.b);
-    for (int k = 1; k <= kLatency + 2; ++k) {
-      const i128 p = kSigned ? sim::get_signed(top->p_o, kAW + kBW)
-                             : static_cast<i128>(sim::get_unsigned(top->p_o, kAW + kBW));
-      const bool ok =
-          top->valid_o ? (k == kLatency && p == want && top->tag_o == 1) : k != kLatency;
-      if (!ok) {
-        std::printf("FAILURE after a reset in traffic: a %s b %s: expected p %s tag 1 at latency "
-                    "%d, got valid_o %d p %s tag %u at latency %d\n",
-                    sim::to_string(op.a).c_str(), sim::to_string(op.b).c_str(),
-                    sim::to_string(want).c_str(), kLatency, static_cast<int>(top->valid_o),
-                    sim::to_string(p).c_str(), static_cast<unsigned>(top->tag_o), k);
-        return 1;
-      }
-      sim::tick(*top, *ctx);
-    }
+  const Item it{hi(kAW), lo(kBW), ref::mul_unit(hi(kAW), lo(kBW))};
+  top.valid_i = 1;
+  sim::put(top.a_i, it.a, kAW);
+  sim::put(top.b_i, it.b, kBW);
+  top.tag_i = 1;
+  tb.tick();
+  top.valid_i = 0;
+  for (int k = 1; k <= kLatency + 2; ++k) {
+    const u128 p = sim::get_unsigned(top.p_o, kAW + kBW);
+    const bool ok = top.valid_o ? (k == kLatency && p == sim::low_bits(static_cast<u128>(it.p), kAW + kBW) &&
+                                   top.tag_o == 1)
+                                : k != kLatency;
+    if (!ok)
+      return tb.fail("after a reset in traffic: a %s b %s: expected p %s tag 1 at latency %d, "
+                     "got valid_o %d p %s tag %u at latency %d",
+                     sim::str(it.a).c_str(), sim::str(it.b).c_str(), sim::str(it.p).c_str(),
+                     kLatency, static_cast<int>(top.valid_o), sim::str(static_cast<i128>(p)).c_str(),
+                     static_cast<unsigned>(top.tag_o), k);
+    tb.tick();
   }
-  top->final();
-  std::printf("rpu_mul %d x %d %s, chunks %d x %d (%d tiles), latency %d: matched %ld items (%s)\n",
-              kAW, kBW, kSigned ? "signed" : "unsigned", kChA, kChB, kTiles, kLatency, matched,
-              exhaustive ? "exhaustive" : "corners + random");
-  return 0;
+  return tb.pass("%d x %d %s, chunks %d x %d (%d tiles), latency %d, %s", kAW, kBW,
+                 kSigned ? "signed" : "unsigned", kChA, kChB, kTiles, kLatency,
+                 exhaustive ? "exhaustive" : "corners + random");
 }

@@ -1,3 +1,2 @@
 # rpu_capture: model test points of curve12, random points, t edge values.
-rpu_verilated_test(tb_rpu_capture TOP rpu_capture TB tb/curve/tb_rpu_capture.cpp
-                   DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+rpu_verilated_test(tb_rpu_capture TOP rpu_capture TB tb/curve/tb_rpu_capture.cpp)

@@ -1,9 +1,9 @@
 # rpu_ip: the K-step process, unrolled and iterative, against ip_process.
 # (The unrolled default is opt-in here: rpu_top contains exactly that rpu_ip and its test covers it.)
 rpu_verilated_test(tb_rpu_ip EXTRA TOP rpu_ip TB tb/curve/tb_rpu_ip.cpp
-                   PARAMS -GCtxW=32 DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+                   PARAMS -GCtxW=32)
 rpu_verilated_test(tb_rpu_ip_iter_n8_n1_4 TOP rpu_ip TB tb/curve/tb_rpu_ip.cpp
                    PARAMS -GCtxW=32 -GUnrolled=0 -GN=8 -GN1=4
-                   DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" UNROLLED=0 IP_N=8 IP_N1=4)
+                   DEFS UNROLLED=0 IP_N=8 IP_N1=4)
 rpu_verilated_test(tb_rpu_ip_step TOP rpu_ip_step TB tb/curve/tb_rpu_ip.cpp
-                   PARAMS -GCtxW=32 -GStep=0 DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" IP_STEP=1)
+                   PARAMS -GCtxW=32 -GStep=0 DEFS IP_STEP=1)

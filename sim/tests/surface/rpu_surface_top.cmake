@@ -6,4 +6,4 @@
 # Opt-in (-DRPU_SIM_EXTRA=ON): its Verilated C++ takes about 8 CPU-minutes to compile.
 rpu_verilated_test(tb_rpu_surface_top EXTRA TOP rpu_surface_top TB tb/surface/tb_rpu_surface_top.cpp
                    PARAMS -GTagW=16
-                   DEFS RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}" TAG_W=16)
+                   DEFS TAG_W=16 UNROLLED=0)
