@@ -1,24 +1,15 @@
-// Shared by the candidate, IP-step and IP testbenches: sampling real (segment, search interval)
-// pairs of a demo scene, driving the segment and interval ports those modules share, and
-// decoding the IP state vector {τ, lo.t, lo.X, lo.md, hi.md}.
+// Shared by the candidate, IP-step and IP testbenches: editing guides, sampling real (segment,
+// search interval) pairs of a demo scene, the segment and interval ports those modules share,
+// and the IP state vector {τ, lo.t, lo.X, lo.md, hi.md}.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-#include "model/units.h"
-#include "scene/compiled_scene.h"
-#include "tb_common.h"
+#include "tb_base.h"
 
 namespace rpu::sim {
-
-// A random value of `width` bits, sign-extended.
-inline i128 random_signed(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  const u128 u = bits & ((u128{1} << width) - 1), sign = u128{1} << (width - 1);
-  return static_cast<i128>((u ^ sign) - sign);
-}
 
 // How edit_guide draws (each testbench keeps the stream its mutants were measured with).
 struct GuideEdit {
@@ -28,8 +19,8 @@ struct GuideEdit {
 };
 
 // A guide as the descriptor compiler would quantise one of height h (in LSB) on a segment of
-// length² L2: flat beyond kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)), else an arc or
-// straight. A straight end (no direction) gets a random unit direction first.
+// length² L2: flat beyond kFlatRatio·L (set_flat_guide), else an arc or straight. A straight end
+// (no direction) gets a random unit direction first.
 inline void edit_guide(const ref::HwParams& p, i128 L2, std::mt19937_64& rng, ref::GuideDesc& g,
                        const GuideEdit& how = {}) {
   if (g.u == ref::IVec3{}) {
@@ -49,11 +40,7 @@ inline void edit_guide(const ref::HwParams& p, i128 L2, std::mt19937_64& rng, re
     const double h = L * ref::HwParams::kFlatRatio *
                      (1.0 + 1e-6 + std::ldexp(std::uniform_real_distribution<double>(0, 1)(rng),
                                               octave));
-    g.a = static_cast<std::int64_t>(std::llround(static_cast<double>(L2) / (2.0 * h)));
-    g.b = static_cast<std::int64_t>(
-        std::llround(std::ldexp(static_cast<double>(L2) / (4.0 * h * h), p.t_frac)));
-    g.h = 0;
-    g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
+    set_flat_guide(g, L2, h, p.t_frac);
   } else if (kind == 5) {  // arc, h in [L/2, 16·L]
     g.h = static_cast<std::int64_t>(
         std::llround(L * std::uniform_real_distribution<double>(0.5, 16)(rng)));
@@ -87,99 +74,55 @@ inline bool sample_pred1_pair(const scene::CompiledScene& sc, const ref::ModelSc
   return out.si.pred1;
 }
 
-// The interval and segment ports shared by rpu_candidate, rpu_ip_step and rpu_ip.
+// The interval and segment input fields shared by rpu_candidate, rpu_ip_step and rpu_ip.
 template <class Top>
-void drive_pair(Top& top, const ref::HwParams& p, const ref::SegmentDesc& s,
-                const ref::SearchInterval& si) {
-  const int CW = p.coord_w, DW = CW + 1, TW = p.t_w(), UW = p.unit_w();
-  put_vec3(top.a_i, si.A.x, si.A.y, si.A.z, CW);
-  put_vec3(top.ab_i, si.AB.x, si.AB.y, si.AB.z, DW);
-  put(top.alpha_i, si.alpha, TW);
-  put(top.beta_i, si.beta, TW);
-  put_vec3(top.p1_i, s.p1.x, s.p1.y, s.p1.z, CW);
-  put_vec3(top.d_i, s.d.x, s.d.y, s.d.z, DW);
-  put(top.l2_i, s.L2, 2 * CW + 3);
+void pair_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::SegmentDesc& s,
+                 const ref::SearchInterval& si) {
+  const int CW = p.coord_w, DW = CW + 1, TW = p.t_w(), UW = p.unit_w(), FT = p.t_frac;
+  in.vec("A", top.a_i, si.A, CW).vec("AB", top.ab_i, si.AB, DW);
+  in("alpha", top.alpha_i, si.alpha, TW)("beta", top.beta_i, si.beta, TW);
+  in.vec("p1", top.p1_i, s.p1, CW).vec("d", top.d_i, s.d, DW)("L2", top.l2_i, s.L2, 2 * CW + 3);
   const ref::GuideDesc& g1 = s.guide[0];
   const ref::GuideDesc& g2 = s.guide[1];
-  top.mode1_i = static_cast<unsigned>(g1.mode);
-  put(top.h1_i, g1.h, CW + 5);
-  put(top.a1_i, g1.a, CW);
-  put(top.b1_i, g1.b, p.t_frac);
-  put_vec3(top.u1_i, g1.u.x, g1.u.y, g1.u.z, UW);
-  top.mode2_i = static_cast<unsigned>(g2.mode);
-  put(top.h2_i, g2.h, CW + 5);
-  put(top.a2_i, g2.a, CW);
-  put(top.b2_i, g2.b, p.t_frac);
-  put_vec3(top.u2_i, g2.u.x, g2.u.y, g2.u.z, UW);
+  in("mode1", top.mode1_i, static_cast<int>(g1.mode), 2)("h1", top.h1_i, g1.h, CW + 5);
+  in("a1", top.a1_i, g1.a, CW)("b1", top.b1_i, g1.b, FT).vec("u1", top.u1_i, g1.u, UW);
+  in("mode2", top.mode2_i, static_cast<int>(g2.mode), 2)("h2", top.h2_i, g2.h, CW + 5);
+  in("a2", top.a2_i, g2.a, CW)("b2", top.b2_i, g2.b, FT).vec("u2", top.u2_i, g2.u, UW);
   // rpu_candidate and rpu_ip_step take h² from their caller (rpu_ip squares h once per pair).
   if constexpr (requires { top.hh1_i; }) {
-    put(top.hh1_i, i128{g1.h} * g1.h, 2 * CW + 10);
-    put(top.hh2_i, i128{g2.h} * g2.h, 2 * CW + 10);
+    in("hh1", top.hh1_i, i128{g1.h} * g1.h, 2 * CW + 10);
+    in("hh2", top.hh2_i, i128{g2.h} * g2.h, 2 * CW + 10);
   }
 }
 
-// Width of one md value and of the state vector.
+// Width of one md value, and the state vector {τ, lo.t, lo.X (z, y, x), lo.md, hi.md}.
 inline int md_width(const ref::HwParams& p) {
   return p.metric == ref::Metric::kAbs ? p.coord_w + 4 : 2 * p.coord_w + 8;
 }
-inline int state_width(const ref::HwParams& p) {
-  return p.n + p.t_w() + 3 * (p.coord_w + 3) + 2 * md_width(p);
+inline Bits pack_state(const ref::HwParams& p, const ref::IpState& st) {
+  Concat c;
+  c.add(static_cast<i128>(st.tau), p.n);
+  c.add(st.lo.t, p.t_w());
+  c.add3(st.lo.X.x, st.lo.X.y, st.lo.X.z, p.coord_w + 3);
+  c.add(st.lo.md, md_width(p));
+  c.add(st.hi.md, md_width(p));
+  return c.bits();
 }
 
-// Decoded state {τ, lo.t, lo.X, lo.md, hi.md}.
-struct IpStateFields {
-  i128 tau = 0, lo_t = 0, x[3]{}, lo_md = 0, hi_md = 0;
-};
-template <std::size_t N>
-IpStateFields read_state(const VlWide<N>& port, const ref::HwParams& p) {
+// The state out of a port, compared field by field with the expected one.
+template <class P>
+void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w) {
   const int TW = p.t_w(), XW = p.coord_w + 3, MdW = md_width(p);
-  const auto field = [&](int hi_bit, int width) {
-    u128 u = 0;
-    for (int b = 0; b < width; ++b) {
-      const int bit = hi_bit - width + 1 + b;
-      if ((port[static_cast<std::size_t>(bit / 32)] >> (bit % 32)) & 1) u |= u128{1} << b;
-    }
-    return u;
-  };
-  const auto sext = [](u128 u, int w) {
-    const u128 sign = u128{1} << (w - 1);
-    return static_cast<i128>((u ^ sign) - sign);
-  };
-  IpStateFields f;
-  int at = state_width(p) - 1;
-  f.tau = static_cast<i128>(field(at, p.n));
-  at -= p.n;
-  f.lo_t = sext(field(at, TW), TW);
-  at -= TW;
-  for (int c = 2; c >= 0; --c) {  // {z, y, x}
-    f.x[c] = sext(field(at, XW), XW);
-    at -= XW;
-  }
-  f.lo_md = static_cast<i128>(field(at, MdW));
-  at -= MdW;
-  f.hi_md = static_cast<i128>(field(at, MdW));
-  return f;
-}
-
-// Encodes a model state into a state port.
-template <std::size_t N>
-void write_state(VlWide<N>& port, const ref::HwParams& p, const ref::IpState& st) {
-  for (std::size_t w = 0; w < N; ++w) port[w] = 0;
-  const int TW = p.t_w(), XW = p.coord_w + 3, MdW = md_width(p);
-  int at = state_width(p);
-  const auto put_field = [&](i128 v, int w) {
-    at -= w;
-    for (int b = 0; b < w; ++b)
-      if ((static_cast<u128>(v) >> b) & 1)
-        port[static_cast<std::size_t>((at + b) / 32)] |= 1u << ((at + b) % 32);
-  };
-  put_field(static_cast<i128>(st.tau), p.n);
-  put_field(st.lo.t, TW);
-  put_field(st.lo.X.z, XW);
-  put_field(st.lo.X.y, XW);
-  put_field(st.lo.X.x, XW);
-  put_field(st.lo.md, MdW);
-  put_field(st.hi.md, MdW);
+  const Bits b = get_bits(port, p.n + TW + 3 * XW + 2 * MdW);
+  int at = b.width();
+  const auto next = [&](int w) { return at -= w; };
+  o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
+  o.value("lo.t", w.lo.t, b.field_signed(next(TW), TW));
+  const i128 z = b.field_signed(next(XW), XW), y = b.field_signed(next(XW), XW);
+  const i128 x = b.field_signed(next(XW), XW);
+  o.value("lo.X.x", w.lo.X.x, x).value("lo.X.y", w.lo.X.y, y).value("lo.X.z", w.lo.X.z, z);
+  o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
+  o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
 }
 
 }  // namespace rpu::sim

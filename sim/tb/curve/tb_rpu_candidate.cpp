@@ -8,21 +8,10 @@
 // descriptor formats hold, both guides flat just past the threshold (a, b largest: their low bits
 // reach g) and t in [1/4, 3/4].
 #include <algorithm>
-#include <cmath>
-#include <deque>
-#include <memory>
+#include <vector>
 
 #include "Vrpu_candidate.h"
-#include "model/units.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
 #include "tb_ip_common.h"
-
-#ifndef METRIC
-#define METRIC 0
-#endif
-
-namespace {
 
 using namespace rpu;
 using sim::i128;
@@ -39,24 +28,16 @@ struct Item {
   bool ovf;
 };
 
-}  // namespace
-
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_candidate");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_candidate>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_candidate");
-  std::mt19937_64 rng(seed);
-
-  const scene::CompiledScene sc = scene::compile_scene(
-      scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/curve12.json"));
-  ref::HwParams p;
-  p.metric = METRIC == 0 ? ref::Metric::kAbs : ref::Metric::kSquared;
+  sim::Testbench<Vrpu_candidate> tb("tb_rpu_candidate", argc, argv);
+  auto& rng = tb.rng;
+  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
+  const ref::HwParams p = sim::tb_params();
   const ref::ModelScene m = ref::quantize_scene(sc, p);
   const int CW = p.coord_w, TW = p.t_w();
-  const long count = sim::vector_count(100000);
+  const long count = tb.vectors(100000);
 
-  std::deque<Item> items;
+  std::vector<Item> items;
   long n_edited = 0, n_long = 0, n_sat = 0, n_neg = 0;
   while (static_cast<long>(items.size()) < count) {
     sim::SampledPair pair;
@@ -126,73 +107,19 @@ int main(int argc, char** argv) {
     }
   }
 
-  sim::reset(*top, *ctx);
-  std::deque<Item> pending;
-  long matched = 0, cycle = 0;
-  const long total = static_cast<long>(items.size());
-  while (matched < total) {
-    const bool issue = !items.empty() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      const Item& it = items.front();
-      sim::put(top->m_i, static_cast<i128>(it.m), p.n + 1);
-      sim::drive_pair(*top, p, it.s, it.si);
-      top->tag_i = it.tag;
-      pending.push_back(it);
-      items.pop_front();
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      const Item it = pending.front();
-      pending.pop_front();
-      const ref::Candidate& w = it.want;
-      const int XW = CW + 3, PrW = CW + 2;
-      const int MdW = METRIC == 0 ? CW + 4 : 2 * CW + 8;
-      const i128 t = sim::get_signed(top->t_o, TW);
-      const i128 x[3] = {sim::get_comp(top->x_o, 0, XW), sim::get_comp(top->x_o, 1, XW),
-                         sim::get_comp(top->x_o, 2, XW)};
-      const i128 pr[3] = {sim::get_comp(top->pr_o, 0, PrW), sim::get_comp(top->pr_o, 1, PrW),
-                          sim::get_comp(top->pr_o, 2, PrW)};
-      const i128 md = static_cast<i128>(sim::get_unsigned(top->md_o, MdW));
-      const bool ok = t == w.t && x[0] == w.X.x && x[1] == w.X.y && x[2] == w.X.z &&
-                      pr[0] == w.pr.x && pr[1] == w.pr.y && pr[2] == w.pr.z && md == w.md &&
-                      static_cast<bool>(top->ovf_o) == it.ovf && top->tag_o == it.tag;
-      if (!ok) {
-        std::printf("FAILURE cycle %ld item %ld: segment %zu%s m = %llu alpha %s beta %s\n"
-                    "  guides: mode %d h %lld a %lld b %lld | mode %d h %lld a %lld b %lld\n"
-                    "  expected t %s X (%s, %s, %s) pr (%s, %s, %s) md %s ovf %d tag %u\n"
-                    "  actual   t %s X (%s, %s, %s) pr (%s, %s, %s) md %s ovf %d tag %u\n",
-                    cycle, matched, it.seg, it.edited ? " (edited)" : "",
-                    static_cast<unsigned long long>(it.m),
-                    sim::to_string(it.si.alpha).c_str(), sim::to_string(it.si.beta).c_str(),
-                    static_cast<int>(it.s.guide[0].mode), static_cast<long long>(it.s.guide[0].h),
-                    static_cast<long long>(it.s.guide[0].a),
-                    static_cast<long long>(it.s.guide[0].b),
-                    static_cast<int>(it.s.guide[1].mode), static_cast<long long>(it.s.guide[1].h),
-                    static_cast<long long>(it.s.guide[1].a),
-                    static_cast<long long>(it.s.guide[1].b),
-                    sim::to_string(w.t).c_str(), sim::to_string(w.X.x).c_str(),
-                    sim::to_string(w.X.y).c_str(), sim::to_string(w.X.z).c_str(),
-                    sim::to_string(w.pr.x).c_str(), sim::to_string(w.pr.y).c_str(),
-                    sim::to_string(w.pr.z).c_str(), sim::to_string(w.md).c_str(), it.ovf, it.tag,
-                    sim::to_string(t).c_str(), sim::to_string(x[0]).c_str(),
-                    sim::to_string(x[1]).c_str(), sim::to_string(x[2]).c_str(),
-                    sim::to_string(pr[0]).c_str(), sim::to_string(pr[1]).c_str(),
-                    sim::to_string(pr[2]).c_str(), sim::to_string(md).c_str(), top->ovf_o,
-                    static_cast<unsigned>(top->tag_o));
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout, %ld of %ld matched\n", matched, total);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("rpu_candidate metric %d: matched %ld items (%ld pairs edited, %ld of them long "
-              "flat; %ld saturated, %ld with t < 0) in %ld cycles\n",
-              METRIC, matched, n_edited, n_long, n_sat, n_neg, cycle);
-  return 0;
+  sim::Stream<Vrpu_candidate, Item> s;
+  s.inputs = [&](sim::Inputs& in, Vrpu_candidate& t, const Item& it) {
+    in("m", t.m_i, static_cast<i128>(it.m), p.n + 1)("tag", t.tag_i, it.tag, 1);
+    sim::pair_inputs(in, t, p, it.s, it.si);
+  };
+  s.outputs = [&](sim::Outputs& o, const Vrpu_candidate& t, const Item& it) {
+    o.s("t", t.t_o, it.want.t, TW).vec("X", t.x_o, it.want.X, CW + 3).vec("pr", t.pr_o, it.want.pr, CW + 2);
+    o("md", t.md_o, it.want.md, sim::md_width(p))("ovf", t.ovf_o, it.ovf, 1)("tag", t.tag_o, it.tag, 1);
+  };
+  s.what = [](const Item& it) { return "segment " + std::to_string(it.seg) + (it.edited ? " (edited)" : ""); };
+  s.latency = sim::kSameLatency;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass("metric %d, %ld pairs edited, %ld of them long flat; %ld saturated, %ld with t < 0",
+                 METRIC, n_edited, n_long, n_sat, n_neg);
 }

@@ -4,16 +4,10 @@
 // and every sign/depth combination (e.g. all signs with depth < 0) occurs;
 // most of these put every dot product near zero, where a flipped product bit flips its sign.
 #include <algorithm>
-#include <deque>
-#include <memory>
+#include <vector>
 
 #include "Vrpu_capture.h"
-#include "model/units.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
-#include "tb_common.h"
-
-namespace {
+#include "tb_base.h"
 
 using namespace rpu;
 using sim::i128;
@@ -26,26 +20,18 @@ struct Item {
   ref::RayGenOut ray;
   ref::CameraDesc cam;
   bool random_edges = false;
-  unsigned tag = 0;
 };
 
-}  // namespace
-
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_capture");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_capture>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_capture");
-  std::mt19937_64 rng(seed);
-
-  const scene::CompiledScene sc = scene::compile_scene(
-      scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/curve12.json"));
-  const ref::HwParams p;
+  sim::Testbench<Vrpu_capture> tb("tb_rpu_capture", argc, argv);
+  auto& rng = tb.rng;
+  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
+  const ref::HwParams p = sim::tb_params();
   const ref::ModelScene m = ref::quantize_scene(sc, p);
   const int CW = p.coord_w, XW = CW + 3, EW = p.edge_w(), TW = p.t_w();
-  const long count = sim::vector_count(100000);
+  const long count = tb.vectors(100000);
 
-  std::deque<Item> items;
+  std::vector<Item> items;
   const i128 one = i128{1} << p.t_frac;
   const i128 top_coord = (i128{1} << (CW - 1)) - 1;
   std::uniform_int_distribution<int> pi(0, m.camera.width - 1), pj(0, m.camera.height - 1);
@@ -129,74 +115,29 @@ int main(int argc, char** argv) {
     items.push_back(it);
   }
 
-  sim::reset(*top, *ctx);
-  const auto put3 = [&](auto& port, const ref::WVec3& v, int w) {
-    sim::put_vec3(port, v.x, v.y, v.z, w);
+  long hits = 0;
+  for (const Item& it : items) hits += it.want.hit;
+
+  sim::Stream<Vrpu_capture, Item> s;
+  s.inputs = [&](sim::Inputs& in, Vrpu_capture& t, const Item& it) {
+    in.vec("X", t.x_i, it.X, XW)("t", t.t_i, it.t, TW).vec("eye", t.eye_i, it.cam.eye, CW);
+    in.vec("e_left", t.e_left_i, it.ray.e_left, EW).vec("e_right", t.e_right_i, it.ray.e_right, EW);
+    in.vec("e_top", t.e_top_i, it.ray.e_top, EW).vec("e_bottom", t.e_bottom_i, it.ray.e_bottom, EW);
+    in.vec("w", t.w_i, it.cam.w, EW);
   };
-  std::deque<Item> pending;
-  long matched = 0, cycle = 0, hits = 0;
-  const long total = static_cast<long>(items.size());
-  while (matched < total) {
-    const bool issue = !items.empty() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      const Item& it = items.front();
-      const ref::RayGenOut& ray = it.ray;
-      put3(top->x_i, it.X, XW);
-      sim::put(top->t_i, it.t, TW);
-      put3(top->eye_i, ref::widen(it.cam.eye), CW);
-      put3(top->e_left_i, ray.e_left, EW);
-      put3(top->e_right_i, ray.e_right, EW);
-      put3(top->e_top_i, ray.e_top, EW);
-      put3(top->e_bottom_i, ray.e_bottom, EW);
-      put3(top->w_i, ref::widen(it.cam.w), EW);
-      top->tag_i = static_cast<unsigned>(pending.size() & 1);
-      pending.push_back(it);
-      pending.back().tag = top->tag_i;
-      items.pop_front();
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      const Item it = pending.front();
-      pending.pop_front();
-      const ref::CaptureOut& w = it.want;
-      const unsigned signs = w.signs[0] | (w.signs[1] << 1) | (w.signs[2] << 2) | (w.signs[3] << 3);
-      const i128 depth = sim::get_signed(top->depth_o, CW + 4 + EW + 2);
-      if (top->hit_o != w.hit || top->t_in_range_o != w.t_in_range || top->signs_o != signs ||
-          depth != w.depth || top->tag_o != it.tag) {
-        if (it.random_edges) {
-          const auto pv = [](const char* n, const ref::WVec3& v) {
-            std::printf("  %s = (%s, %s, %s)\n", n, sim::to_string(v.x).c_str(),
-                        sim::to_string(v.y).c_str(), sim::to_string(v.z).c_str());
-          };
-          std::printf("random-edge item:\n");
-          pv("e_left", it.ray.e_left);
-          pv("e_right", it.ray.e_right);
-          pv("e_top", it.ray.e_top);
-          pv("e_bottom", it.ray.e_bottom);
-          pv("eye", ref::widen(it.cam.eye));
-          pv("w", ref::widen(it.cam.w));
-        }
-        std::printf("FAILURE cycle %ld item %ld: pixel (%d,%d) X = (%s, %s, %s) t = %s\n"
-                    "  expected hit %d t_ok %d signs %x depth %s tag %u\n"
-                    "  actual   hit %d t_ok %d signs %x depth %s tag %u\n",
-                    cycle, matched, it.i, it.j, sim::to_string(it.X.x).c_str(),
-                    sim::to_string(it.X.y).c_str(), sim::to_string(it.X.z).c_str(),
-                    sim::to_string(it.t).c_str(), w.hit, w.t_in_range, signs,
-                    sim::to_string(w.depth).c_str(), it.tag, top->hit_o, top->t_in_range_o,
-                    top->signs_o, sim::to_string(depth).c_str(), static_cast<unsigned>(top->tag_o));
-        return 1;
-      }
-      hits += w.hit;
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout, %ld of %ld matched\n", matched, total);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("rpu_capture: matched %ld items (%ld hits) in %ld cycles\n", matched, hits, cycle);
-  return 0;
+  s.outputs = [&](sim::Outputs& o, const Vrpu_capture& t, const Item& it) {
+    const ref::CaptureOut& w = it.want;
+    const unsigned signs = w.signs[0] | (w.signs[1] << 1) | (w.signs[2] << 2) | (w.signs[3] << 3);
+    o("hit", t.hit_o, w.hit, 1)("t_in_range", t.t_in_range_o, w.t_in_range, 1)("signs", t.signs_o, signs, 4);
+    o.s("depth", t.depth_o, w.depth, CW + 4 + EW + 2);
+  };
+  s.what = [](const Item& it) {
+    return "pixel (" + std::to_string(it.i) + ", " + std::to_string(it.j) + ")" +
+           (it.random_edges ? ", random edge vectors" : "");
+  };
+  s.latency = sim::kSameLatency;
+  s.tag_w = 1;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass("%ld hits", hits);
 }

@@ -1,58 +1,28 @@
 // rpu_chord against its twin rpu::ref::chord_parameter: every inv_s (left and right shifts) with
 // the extreme operands, values at the saturation boundary for each shift, then seeded random
-// operands (magnitudes spread, inv_m normalised or arbitrary); random valid gaps.
-#include <deque>
-#include <memory>
+// operands (magnitudes spread, inv_m normalised or arbitrary).
 #include <vector>
 
 #include "Vrpu_chord.h"
-#include "model/units.h"
-#include "tb_common.h"
-
-#ifndef COORD_W
-#define COORD_W 24
-#endif
-#ifndef T_FRAC
-#define T_FRAC 24
-#endif
-#ifndef INV_W
-#define INV_W 18
-#endif
-#ifndef TAG_W
-#define TAG_W 8
-#endif
-
-namespace {
+#include "tb_base.h"
 
 using namespace rpu;
-using fixed::u128;
 using sim::i128;
-
-struct Item {
-  i128 dot;
-  i128 inv_m;
-  int inv_s;
-  i128 t;
-  bool ovf;
-};
-
-}  // namespace
+using sim::u128;
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_chord");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_chord>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_chord");
-  std::mt19937_64 rng(seed);
-  ref::HwParams p;
-  p.coord_w = COORD_W;
-  p.t_frac = T_FRAC;
-  p.inv_w = INV_W;
-  p.validate();
+  sim::Testbench<Vrpu_chord> tb("tb_rpu_chord", argc, argv);
+  auto& rng = tb.rng;
+  const ref::HwParams p = sim::tb_params();
   const int DotW = 2 * p.diff_w() + 2, IW = p.inv_w, TW = p.t_w(), FT = p.t_frac;
   constexpr int kShW = 7;
-  const int kLatency = ref::chord_latency(p);
 
+  struct Item {
+    i128 dot, inv_m;
+    int inv_s;
+    i128 t;
+    bool ovf;
+  };
   std::vector<Item> items;
   const auto add = [&](i128 dot, i128 inv_m, int inv_s) {
     ref::SegmentDesc s;
@@ -78,7 +48,7 @@ int main(int argc, char** argv) {
         if (fixed::fits_signed(dot, DotW)) add(dot, 1, FT + k);
       }
   // Random operands.
-  const long count = sim::vector_count(200000);
+  const long count = tb.vectors(200000);
   for (long k = 0; k < count; ++k) {
     const int b = 1 + static_cast<int>(rng() % DotW);
     const i128 dot = static_cast<i128>(((static_cast<u128>(rng()) << 64) | rng()) &
@@ -90,67 +60,19 @@ int main(int argc, char** argv) {
                             : FT - 4 + static_cast<int>(rng() % (DotW + 8));  // realistic
     add(dot, m, s);
   }
+  long saturated = 0;
+  for (const Item& it : items) saturated += it.ovf;
 
-  sim::reset(*top, *ctx);
-  struct Pending {
-    size_t index;
-    long cycle;
-    std::uint32_t tag;
+  sim::Stream<Vrpu_chord, Item> s;
+  s.inputs = [&](sim::Inputs& in, Vrpu_chord& t, const Item& it) {
+    in("dot", t.dot_i, it.dot, DotW)("inv_m", t.inv_m_i, it.inv_m, IW)("inv_s", t.inv_s_i, it.inv_s, kShW);
   };
-  std::deque<Pending> pending;
-  long matched = 0, cycle = 0, saturated = 0;
-  size_t next = 0;
-  const long total = static_cast<long>(items.size());
-  const u128 tag_mask = fixed::max_unsigned(TAG_W);
-  while (matched < total) {
-    const bool issue = next < items.size() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      const Item& it = items[next];
-      sim::put(top->dot_i, it.dot & static_cast<i128>(fixed::max_unsigned(DotW)), DotW);
-      sim::put(top->inv_m_i, it.inv_m, IW);
-      sim::put(top->inv_s_i, it.inv_s, kShW);
-      const std::uint32_t tag = static_cast<std::uint32_t>(next & tag_mask);
-      sim::put(top->tag_i, tag, TAG_W);
-      pending.push_back({next, cycle, tag});
-      ++next;
-    } else {  // junk between operands
-      sim::put(top->dot_i, static_cast<i128>(rng() & fixed::max_unsigned(DotW < 64 ? DotW : 64)), DotW);
-      sim::put(top->inv_m_i, static_cast<i128>(rng() & fixed::max_unsigned(IW)), IW);
-      sim::put(top->inv_s_i, static_cast<i128>(rng() & 0x7F), kShW);
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (pending.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no operand outstanding\n", cycle);
-        return 1;
-      }
-      const Pending pd = pending.front();
-      pending.pop_front();
-      const Item& it = items[pd.index];
-      const i128 t = sim::get_signed(top->t_o, TW);
-      const bool ovf = top->ovf_o;
-      const auto tag = static_cast<std::uint32_t>(sim::get_unsigned(top->tag_o, TAG_W));
-      if (t != it.t || ovf != it.ovf || tag != pd.tag || cycle - pd.cycle != kLatency) {
-        std::printf("FAILURE cycle %ld item %zu: dot = %s inv_m = %s inv_s = %d: expected t %s "
-                    "ovf %d tag %u latency %d, got t %s ovf %d tag %u latency %ld\n",
-                    cycle, pd.index, sim::to_string(it.dot).c_str(),
-                    sim::to_string(it.inv_m).c_str(), it.inv_s, sim::to_string(it.t).c_str(),
-                    it.ovf, pd.tag, kLatency, sim::to_string(t).c_str(), ovf, tag,
-                    cycle - pd.cycle);
-        return 1;
-      }
-      saturated += it.ovf;
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("rpu_chord DotW=%d InvW=%d TFrac=%d: matched %ld items (%ld saturated) in %ld cycles\n",
-              DotW, IW, FT, matched, saturated, cycle);
-  return 0;
+  s.outputs = [&](sim::Outputs& o, const Vrpu_chord& t, const Item& it) {
+    o.s("t", t.t_o, it.t, TW)("ovf", t.ovf_o, it.ovf, 1);
+  };
+  s.latency = ref::chord_latency(p);
+  s.tag_w = TAG_W;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass("DotW=%d InvW=%d TFrac=%d, %ld saturated", DotW, IW, FT, saturated);
 }

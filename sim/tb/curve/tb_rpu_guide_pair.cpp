@@ -4,29 +4,13 @@
 // h from 0.01 L to 1000 L, L from 2^8 up to 2^CW) and straight ones, with t over the whole
 // Q(3.FT) range (w clamps outside [0, 1]), plus random values over the full port range (mode
 // code 3, saturating radicands). With HhIn = 1 the h² ports carry h² (the caller's contract);
-// with HhIn = 0 they carry junk, which must not matter. Random valid gaps and junk on idle
-// cycles; compares g1, g2, w, the overflow bit, the tag and the latency of every item, in order.
-#include <algorithm>
+// with HhIn = 0 they carry junk, which must not matter.
 #include <cmath>
-#include <deque>
-#include <memory>
+#include <vector>
 
 #include "Vrpu_guide_pair.h"
-#include "model/units.h"
-#include "tb_common.h"
+#include "tb_base.h"
 
-#ifndef COORD_W
-#define COORD_W 24
-#endif
-#ifndef T_FRAC
-#define T_FRAC 24
-#endif
-#ifndef SQRT_W
-#define SQRT_W 0
-#endif
-#ifndef TAG_W
-#define TAG_W 1
-#endif
 #ifndef HH_IN
 #define HH_IN 1
 #endif
@@ -37,15 +21,16 @@
 namespace {
 
 using namespace rpu;
-using rpu::sim::i128;
-using rpu::sim::u128;
+using sim::i128;
+using sim::random_bits;
+using sim::random_signed;
+using sim::random_spread;
 using ld = long double;
 
-constexpr int kCW = COORD_W, kFT = T_FRAC, kSqrtW = SQRT_W, kTagW = TAG_W;
+constexpr int kCW = COORD_W, kFT = T_FRAC;
 constexpr bool kHhIn = HH_IN != 0;
 constexpr int kTW = kFT + 3, kWW = kFT - 1, kHW = kCW + 5, kAW = kCW, kL2W = 2 * kCW + 3;
 constexpr int kGW = kCW + 2, kRadW = 2 * kCW + 10;
-
 
 struct Op {  // one guide (l2 and t are the pair's: guide 1's fields hold them)
   int mode = 0;
@@ -53,34 +38,9 @@ struct Op {  // one guide (l2 and t are the pair's: guide 1's fields hold them)
 };
 struct PairOp {
   Op g[2];
+  ref::GuidePair want;  // the twin's g1, g2, w
+  bool ovf = false;
 };
-
-struct Item {
-  PairOp op;
-  i128 g1, g2, w;
-  bool ovf;
-  std::uint32_t tag;
-  long issued;  // cycle count before the issuing edge
-};
-
-// Ports take the value's low `width` bits (Verilator wants the bits above a port's width clear).
-template <class P>
-void drive(P& port, i128 v, int width) {
-  sim::put(port, static_cast<i128>(static_cast<u128>(v) & fixed::max_unsigned(width)), width);
-}
-
-i128 random_bits(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  return static_cast<i128>(bits & fixed::max_unsigned(width));
-}
-// Spread over magnitudes: a random width 1..width, then random bits.
-i128 random_spread(std::mt19937_64& rng, int width) {
-  return random_bits(rng, 1 + static_cast<int>(rng() % static_cast<unsigned>(width)));
-}
-i128 random_signed(std::mt19937_64& rng, int width) {
-  const i128 u = random_bits(rng, width);
-  return u > fixed::max_signed(width) ? u - (i128{1} << width) : u;
-}
 
 // A descriptor-like guide (the model test's construction) of a segment of length L in
 // [2^8, 2^CW): h = L·10^(−2..3).
@@ -122,27 +82,21 @@ i128 random_t(std::mt19937_64& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_guide_pair");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_guide_pair>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_guide_pair");
-  std::mt19937_64 rng(seed);
+  sim::Testbench<Vrpu_guide_pair> tb("tb_rpu_guide_pair", argc, argv);
+  auto& rng = tb.rng;
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const long random_count = sim::vector_count(VECTORS);
-
-  ref::HwParams p;
-  p.coord_w = kCW;
-  p.t_frac = kFT;
-  p.sqrt_w = kSqrtW;
-  p.validate();
-  const int kLatency = ref::guide_pair_latency(p);  // its header: w, the products, the roots
+  const long random_count = tb.vectors(VECTORS);
+  const ref::HwParams p = sim::tb_params();
 
   // ---- the operand list: edges first, then random ----
-  std::deque<PairOp> ops;
+  std::vector<PairOp> ops;
   const auto pair_of = [](Op g1, Op g2, i128 t) {
     g1.t = t;
     g2.l2 = g1.l2;
-    return PairOp{{g1, g2}};
+    PairOp op;
+    op.g[0] = g1;
+    op.g[1] = g2;
+    return op;
   };
   const i128 one = i128{1} << kFT;
   const i128 t_edges[] = {0, 1, 2, one / 2, one / 2 + 1, one - 1, one, one + 1, -1,
@@ -207,102 +161,45 @@ int main(int argc, char** argv) {
     ops.push_back(op);
   }
 
-  // ---- drive and check ----
-  sim::reset(*top, *ctx);
-  std::deque<Item> expected;
-  long matched = 0, cycle = 0, arcs = 0, flats = 0, overflows = 0, negative_g = 0;
-  const long total = static_cast<long>(ops.size());
-  const std::uint32_t tag_mask = kTagW >= 32 ? 0xFFFFFFFFu : ((1u << kTagW) - 1);
-  const auto junk_op = [&] {
-    Op g{static_cast<int>(rng() % 4), random_bits(rng, kHW), random_bits(rng, kAW),
-         random_bits(rng, kFT), random_bits(rng, kL2W), random_bits(rng, kTW)};
-    return g;
-  };
-  while (matched < total) {
-    const bool issue = !ops.empty() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    PairOp op;
-    if (issue) {
-      op = ops.front();
-      ops.pop_front();
-    } else {  // junk on idle cycles: must not matter
-      op.g[0] = junk_op();
-      op.g[1] = junk_op();
+  // ---- the twin ----
+  long arcs = 0, flats = 0, overflows = 0, negative_g = 0;
+  for (PairOp& op : ops) {
+    ref::GuideDesc g[2];
+    for (int k = 0; k < 2; ++k) {
+      g[k].mode = static_cast<ref::GuideMode>(op.g[k].mode);  // code 3: not a named mode, g = 0
+      g[k].h = static_cast<fixed::i64>(op.g[k].h);
+      g[k].a = static_cast<fixed::i64>(op.g[k].a);
+      g[k].b = static_cast<fixed::i64>(op.g[k].b);
+      arcs += op.g[k].mode == 1;
+      flats += op.g[k].mode == 2;
     }
-    drive(top->t_i, op.g[0].t, kTW);
-    drive(top->l2_i, op.g[0].l2, kL2W);
-    const auto hh = [&](const Op& g) { return kHhIn ? g.h * g.h : random_bits(rng, kRadW); };
-    drive(top->mode1_i, op.g[0].mode, 2);
-    drive(top->h1_i, op.g[0].h, kHW);
-    drive(top->hh1_i, hh(op.g[0]), kRadW);
-    drive(top->a1_i, op.g[0].a, kAW);
-    drive(top->b1_i, op.g[0].b, kFT);
-    drive(top->mode2_i, op.g[1].mode, 2);
-    drive(top->h2_i, op.g[1].h, kHW);
-    drive(top->hh2_i, hh(op.g[1]), kRadW);
-    drive(top->a2_i, op.g[1].a, kAW);
-    drive(top->b2_i, op.g[1].b, kFT);
-    const std::uint32_t this_tag = static_cast<std::uint32_t>(rng()) & tag_mask;
-    drive(top->tag_i, this_tag, kTagW);
-    if (issue) {
-      ref::GuideDesc g[2];
-      for (int k = 0; k < 2; ++k) {
-        g[k].mode = static_cast<ref::GuideMode>(op.g[k].mode);  // code 3: not a named mode, g = 0
-        g[k].h = static_cast<fixed::i64>(op.g[k].h);
-        g[k].a = static_cast<fixed::i64>(op.g[k].a);
-        g[k].b = static_cast<fixed::i64>(op.g[k].b);
-        arcs += op.g[k].mode == 1;
-        flats += op.g[k].mode == 2;
-      }
-      fixed::Overflow ovf;
-      const ref::GuidePair gp = ref::guide_pair(p, g[0], g[1], op.g[0].l2, op.g[0].t, ovf);
-      expected.push_back({op, gp.g1, gp.g2, gp.w, ovf.flag, this_tag, cycle});
-      overflows += ovf.flag;
-      negative_g += (gp.g1 < 0) + (gp.g2 < 0);
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (expected.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no operand outstanding\n", cycle);
-        return 1;
-      }
-      const Item want = expected.front();
-      expected.pop_front();
-      const i128 g1 = sim::get_signed(top->g1_o, kGW);
-      const i128 g2 = sim::get_signed(top->g2_o, kGW);
-      const i128 w = static_cast<i128>(sim::get_unsigned(top->w_o, kWW));
-      const bool ovf = top->ovf_o;
-      const auto got_tag = static_cast<std::uint32_t>(sim::get_unsigned(top->tag_o, kTagW));
-      const long latency = cycle - want.issued;
-      if (g1 != want.g1 || g2 != want.g2 || w != want.w || ovf != want.ovf ||
-          got_tag != want.tag || latency != kLatency) {
-        std::printf("FAILURE cycle %ld item %ld: L2 %s t %s\n", cycle, matched,
-                    sim::to_string(want.op.g[0].l2).c_str(), sim::to_string(want.op.g[0].t).c_str());
-        for (int k = 0; k < 2; ++k)
-          std::printf("  guide %d: mode %d h %s a %s b %s\n", k + 1, want.op.g[k].mode,
-                      sim::to_string(want.op.g[k].h).c_str(), sim::to_string(want.op.g[k].a).c_str(),
-                      sim::to_string(want.op.g[k].b).c_str());
-        std::printf("  expected g1 %s g2 %s w %s ovf %d tag %u latency %d\n",
-                    sim::to_string(want.g1).c_str(), sim::to_string(want.g2).c_str(),
-                    sim::to_string(want.w).c_str(), want.ovf, want.tag, kLatency);
-        std::printf("  got      g1 %s g2 %s w %s ovf %d tag %u latency %ld\n",
-                    sim::to_string(g1).c_str(), sim::to_string(g2).c_str(),
-                    sim::to_string(w).c_str(), ovf, got_tag, latency);
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
+    fixed::Overflow ovf;
+    op.want = ref::guide_pair(p, g[0], g[1], op.g[0].l2, op.g[0].t, ovf);
+    op.ovf = ovf.flag;
+    overflows += ovf.flag;
+    negative_g += (op.want.g1 < 0) + (op.want.g2 < 0);
   }
-  top->final();
-  std::printf("rpu_guide_pair CoordW=%d TFrac=%d SqrtW=%d HhIn=%d TagW=%d latency %d: matched "
-              "%ld items (%ld edges, %ld descriptor-like, %ld full-range; %ld arc, %ld flat "
-              "guides, %ld overflow, %ld negative g) in %ld cycles\n",
-              kCW, kFT, kSqrtW, static_cast<int>(kHhIn), kTagW, kLatency, matched, edge_count,
-              design, raw, arcs, flats, overflows, negative_g, cycle);
-  return 0;
+
+  sim::Stream<Vrpu_guide_pair, PairOp> s;
+  s.inputs = [](sim::Inputs& in, Vrpu_guide_pair& t, const PairOp& op) {
+    const auto hh = [&](const Op& g) { return kHhIn ? g.h * g.h : in.random(kRadW); };
+    in("t", t.t_i, op.g[0].t, kTW)("L2", t.l2_i, op.g[0].l2, kL2W);
+    in("mode1", t.mode1_i, op.g[0].mode, 2)("h1", t.h1_i, op.g[0].h, kHW)("hh1", t.hh1_i, hh(op.g[0]), kRadW);
+    in("a1", t.a1_i, op.g[0].a, kAW)("b1", t.b1_i, op.g[0].b, kFT);
+    in("mode2", t.mode2_i, op.g[1].mode, 2)("h2", t.h2_i, op.g[1].h, kHW)("hh2", t.hh2_i, hh(op.g[1]), kRadW);
+    in("a2", t.a2_i, op.g[1].a, kAW)("b2", t.b2_i, op.g[1].b, kFT);
+  };
+  s.outputs = [](sim::Outputs& o, const Vrpu_guide_pair& t, const PairOp& op) {
+    o.s("g1", t.g1_o, op.want.g1, kGW).s("g2", t.g2_o, op.want.g2, kGW)("w", t.w_o, op.want.w, kWW);
+    o("ovf", t.ovf_o, op.ovf, 1);
+  };
+  s.latency = ref::guide_pair_latency(p);  // its header: w, the products, the roots
+  s.tag_w = TAG_W;
+  tb.reset();
+  if (!tb.run(ops, s)) return 1;
+  return tb.pass("CoordW=%d TFrac=%d SqrtW=%d HhIn=%d TagW=%d latency %ld; %ld edges, %ld "
+                 "descriptor-like, %ld full-range; %ld arc, %ld flat guides, %ld overflow, %ld "
+                 "negative g",
+                 kCW, kFT, SQRT_W, static_cast<int>(kHhIn), TAG_W, s.latency, edge_count, design,
+                 raw, arcs, flats, overflows, negative_g);
 }

@@ -10,33 +10,19 @@
 // opposite one, so md reaches its top bits. The step's items sometimes enter with lo.md or
 // hi.md replaced (0, the largest value or random): the step takes any state, and the argmin
 // then picks the candidates next to the replaced end.
-#include <algorithm>
 #include <cmath>
-#include <deque>
-#include <memory>
+#include <vector>
 
 #ifdef IP_STEP
 #include "Vrpu_ip_step.h"
 using Dut = Vrpu_ip_step;
+constexpr const char* kName = "rpu_ip_step";
 #else
 #include "Vrpu_ip.h"
 using Dut = Vrpu_ip;
+constexpr const char* kName = "rpu_ip";
 #endif
-#include "scene/scene_json.h"
 #include "tb_ip_common.h"
-
-#ifndef IP_N
-#define IP_N 16
-#endif
-#ifndef IP_N1
-#define IP_N1 2
-#endif
-#ifndef METRIC
-#define METRIC 0
-#endif
-#ifndef UNROLLED
-#define UNROLLED 1
-#endif
 
 namespace {
 
@@ -103,32 +89,17 @@ int edit_pair(const ref::HwParams& p, std::mt19937_64& rng, ref::SegmentDesc& s,
   return 1;
 }
 
-#ifdef IP_STEP
-constexpr const char* kName = "rpu_ip_step";
-#else
-constexpr const char* kName = "rpu_ip";
-#endif
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_ip");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Dut>(ctx.get());
-  const std::uint64_t seed = sim::test_seed(kName);
-  std::mt19937_64 rng(seed);
-
-  const scene::CompiledScene sc = scene::compile_scene(
-      scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/curve12.json"));
-  ref::HwParams p;
-  p.n = IP_N;
-  p.n1 = IP_N1;
-  p.metric = METRIC == 0 ? ref::Metric::kAbs : ref::Metric::kSquared;
-  p.unrolled = UNROLLED != 0;
+  sim::Testbench<Dut> tb(kName, argc, argv);
+  auto& rng = tb.rng;
+  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
+  const ref::HwParams p = sim::tb_params();
   const ref::ModelScene m = ref::quantize_scene(sc, p);
-  const long count = sim::vector_count(UNROLLED ? 20000 : 4000);
+  const long count = tb.vectors(UNROLLED ? 20000 : 4000);
 
-  std::deque<Item> items;
+  std::vector<Item> items;
   std::uint32_t id = 0;
   long n_edited = 0, n_far = 0, n_md_top = 0, n_replaced = 0;
   const int MdW = sim::md_width(p);
@@ -170,125 +141,58 @@ int main(int argc, char** argv) {
 #endif
   }
 
-  sim::reset(*top, *ctx);
-  std::deque<Item> pending;
-  long matched = 0, cycle = 0;
-  const long total = static_cast<long>(items.size());
-  [[maybe_unused]] long burst_out = 0, burst_cycles = 0;  // the iterative form's throughput
-  while (matched < total) {
-    // Every other 2048 cycles a burst with valid_i always high: the iterative form's start
-    // FIFO fills to its depth and ready_o's credit count is tested at its limit.
-    const bool burst = (cycle >> 11) & 1;
-    const bool issue = !items.empty() && (burst || (rng() % 100) < 85);
+  sim::Stream<Dut, Item> s;
+  s.inputs = [&](sim::Inputs& in, Dut& t, const Item& it) {
+    sim::pair_inputs(in, t, p, it.s, it.si);
+    in("ctx", t.ctx_i, it.id, 32);
 #ifdef IP_STEP
-    const bool ready = true;
-#else
-    const bool ready = top->ready_o;  // sampled before the edge, as the hardware does
+    in("tag", t.tag_i, it.tag, 1)("k", t.k_i, it.in.k + 1, 8).bits("state", t.state_i, sim::pack_state(p, it.in));
+    in.note("in.tau", std::to_string(it.in.tau)).note("in.lo.md", sim::str(it.in.lo.md));
+    in.note("in.hi.md", sim::str(it.in.hi.md));
 #endif
-    top->valid_i = issue;
-    if (issue) {
-      const Item& it = items.front();
-      sim::drive_pair(*top, p, it.s, it.si);
-      sim::put(top->ctx_i, it.id, 32);
+  };
+  s.outputs = [&](sim::Outputs& o, const Dut& t, const Item& it) {
+    sim::state_outputs(o, t.state_o, p, it.want);
+    o("ovf", t.ovf_o, it.ovf, 1)("ctx", t.ctx_o, it.id, 32);
 #ifdef IP_STEP
-      top->tag_i = it.tag;
-      top->k_i = static_cast<unsigned>(it.in.k + 1);
-      sim::write_state(top->state_i, p, it.in);
+    o("tag", t.tag_o, it.tag, 1);
 #endif
-      if (ready) {
-        pending.push_back(it);
-        items.pop_front();
-      }
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (pending.empty()) {
-        std::printf("FAILURE cycle %ld: result with nothing outstanding\n", cycle);
-        return 1;
-      }
-      const Item it = pending.front();
-      pending.pop_front();
-      const sim::IpStateFields f = sim::read_state(top->state_o, p);
-      const ref::IpState& w = it.want;
-      const std::uint32_t got_id = static_cast<std::uint32_t>(top->ctx_o);
-      const bool ok = f.tau == static_cast<i128>(w.tau) && f.lo_t == w.lo.t && f.x[0] == w.lo.X.x &&
-                      f.x[1] == w.lo.X.y && f.x[2] == w.lo.X.z && f.lo_md == w.lo.md &&
-                      f.hi_md == w.hi.md && static_cast<bool>(top->ovf_o) == it.ovf &&
-                      got_id == it.id;
-#ifdef IP_STEP
-      const unsigned got_tag = static_cast<unsigned>(top->tag_o);
-#else
-      const unsigned got_tag = 0;
+  };
+  s.what = [](const Item& it) {
+    return "segment " + std::to_string(it.seg) + (it.edited == 2 ? " (far miss)" : it.edited ? " (edited)" : "");
+  };
+  // Every other 2048 cycles a burst with valid_i always high: the iterative form's start FIFO
+  // fills to its depth and ready_o's credit count is tested at its limit.
+  s.traffic.valid_at = [](long cycle) { return (cycle >> 11) & 1 ? 100 : 85; };
+  s.timeout = 40 * static_cast<long>(items.size()) + 5000;
+#if defined(IP_STEP) || UNROLLED
+  s.latency = sim::kSameLatency;  // pipelines (the iterative form's latency follows the load)
 #endif
-      if (!ok || got_tag != it.tag) {
-        const ref::SegmentDesc& s = it.s;
-        std::printf("FAILURE cycle %ld item %ld (id %u, got id %u; tag %u, got tag %u): segment %zu%s"
-                    " alpha %s beta %s\n"
-                    "  A (%lld, %lld, %lld) AB (%lld, %lld, %lld) p1 (%lld, %lld, %lld)"
-                    " d (%lld, %lld, %lld)\n"
-                    "  guides: mode %d h %lld a %lld b %lld | mode %d h %lld a %lld b %lld\n"
-                    "  in: k %d tau %llu lo.md %s hi.md %s\n"
-                    "  expected tau %llu lo.t %s lo.X (%s, %s, %s) lo.md %s hi.md %s ovf %d\n"
-                    "  actual   tau %s lo.t %s lo.X (%s, %s, %s) lo.md %s hi.md %s ovf %d\n",
-                    cycle, matched, it.id, got_id, it.tag, got_tag, it.seg,
-                    it.edited == 2 ? " (far miss)" : it.edited ? " (edited)" : "",
-                    sim::to_string(it.si.alpha).c_str(), sim::to_string(it.si.beta).c_str(),
-                    static_cast<long long>(it.si.A.x), static_cast<long long>(it.si.A.y),
-                    static_cast<long long>(it.si.A.z), static_cast<long long>(it.si.AB.x),
-                    static_cast<long long>(it.si.AB.y), static_cast<long long>(it.si.AB.z),
-                    static_cast<long long>(s.p1.x), static_cast<long long>(s.p1.y),
-                    static_cast<long long>(s.p1.z), static_cast<long long>(s.d.x),
-                    static_cast<long long>(s.d.y), static_cast<long long>(s.d.z),
-                    static_cast<int>(s.guide[0].mode), static_cast<long long>(s.guide[0].h),
-                    static_cast<long long>(s.guide[0].a), static_cast<long long>(s.guide[0].b),
-                    static_cast<int>(s.guide[1].mode), static_cast<long long>(s.guide[1].h),
-                    static_cast<long long>(s.guide[1].a), static_cast<long long>(s.guide[1].b),
-                    it.in.k, static_cast<unsigned long long>(it.in.tau),
-                    sim::to_string(it.in.lo.md).c_str(), sim::to_string(it.in.hi.md).c_str(),
-                    static_cast<unsigned long long>(w.tau),
-                    sim::to_string(w.lo.t).c_str(), sim::to_string(w.lo.X.x).c_str(),
-                    sim::to_string(w.lo.X.y).c_str(), sim::to_string(w.lo.X.z).c_str(),
-                    sim::to_string(w.lo.md).c_str(), sim::to_string(w.hi.md).c_str(), it.ovf,
-                    sim::to_string(f.tau).c_str(), sim::to_string(f.lo_t).c_str(),
-                    sim::to_string(f.x[0]).c_str(), sim::to_string(f.x[1]).c_str(),
-                    sim::to_string(f.x[2]).c_str(), sim::to_string(f.lo_md).c_str(),
-                    sim::to_string(f.hi_md).c_str(), top->ovf_o);
-        return 1;
-      }
-      ++matched;
-    }
 #if !UNROLLED && !defined(IP_STEP)
-    // Throughput of the iterative form: in a burst (valid_i always high, the start FIFO full
-    // since the previous phase issued faster than 1/K), one result per K cycles; counted from
-    // 512 cycles into the burst to its end; checked for bursts that had items all along.
-    {
-      const long phase = cycle & 2047;
-      if (burst && phase >= 512 && !items.empty()) {
-        ++burst_cycles;
-        burst_out += top->valid_o;
-      }
-      if (phase == 2047 && burst_cycles == 2048 - 512) {  // whole bursts only
-        if (burst_out * p.K() + 8 * p.K() < burst_cycles) {
-          std::printf("FAILURE cycle %ld: %ld results in %ld burst cycles, expected about one per "
-                      "K = %d cycles (ready_o or the start FIFO throttles)\n",
-                      cycle, burst_out, burst_cycles, p.K());
-          return 1;
-        }
-      }
-      if (phase == 2047) burst_out = burst_cycles = 0;
+  // Throughput of the iterative form: in a burst (valid_i always high, the start FIFO full since
+  // the previous phase issued faster than 1/K), one result per K cycles; counted from 512 cycles
+  // into the burst to its end; checked for bursts that had items all along.
+  long burst_out = 0, burst_cycles = 0;
+  s.monitor = [&](const Dut& t, const sim::Cycle& c) -> std::string {
+    const long phase = c.cycle & 2047;
+    if ((c.cycle >> 11) & 1 && phase >= 512 && c.left > 0) {
+      ++burst_cycles;
+      burst_out += t.valid_o;
     }
+    std::string e;
+    if (phase == 2047 && burst_cycles == 2048 - 512 && burst_out * p.K() + 8 * p.K() < burst_cycles)
+      e = std::to_string(burst_out) + " results in " + std::to_string(burst_cycles) +
+          " burst cycles, expected about one per K = " + std::to_string(p.K()) +
+          " cycles (ready_o or the start FIFO throttles)";
+    if (phase == 2047) burst_out = burst_cycles = 0;
+    return e;
+  };
 #endif
-    if (cycle > 40 * total + 5000) {
-      std::printf("FAILURE: timeout, %ld of %ld matched\n", matched, total);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("%s n=%d n1=%d metric %d %s: matched %ld items in %ld cycles (%.3f items/cycle); "
-              "pairs edited %ld (far misses %ld), ends' md replaced %ld, results with md's top bit "
-              "%ld\n",
-              kName, IP_N, IP_N1, METRIC, UNROLLED ? "unrolled" : "iterative", matched, cycle,
-              static_cast<double>(matched) / cycle, n_edited, n_far, n_replaced, n_md_top);
-  return 0;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass("%s n=%d n1=%d metric %d %s, %.3f items/cycle; pairs edited %ld (far misses %ld), "
+                 "ends' md replaced %ld, results with md's top bit %ld",
+                 kName, IP_N, IP_N1, METRIC, UNROLLED ? "unrolled" : "iterative",
+                 static_cast<double>(tb.matched()) / static_cast<double>(tb.cycle()), n_edited,
+                 n_far, n_replaced, n_md_top);
 }

@@ -6,40 +6,15 @@
 // (tests/test_model.cpp Overflow.RangeEdgesSaturateAndFlag and an eye-at-a-corner sweep); format
 // corners (eye, c0, v̂ at their extremes: the internal width bounds) and random vectors over the
 // whole port range (radicand saturation, any inv_s). ellipse6 has no curve segment (skipped).
-// Random valid gaps, junk on the data inputs between operands; latency and tag checked too.
 // pred1, tc, half_chord and the overflow bit are compared always; A, B, AB, alpha and beta when
 // pred1 holds (the model leaves them zero otherwise; the RTL's are don't-care).
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <memory>
 #include <vector>
 
 #include "Vrpu_sphere.h"
-#include "common/error.h"
-#include "model/units.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
-#include "tb_common.h"
-
-#ifndef COORD_W
-#define COORD_W 24
-#endif
-#ifndef DIR_FRAC
-#define DIR_FRAC 24
-#endif
-#ifndef T_FRAC
-#define T_FRAC 24
-#endif
-#ifndef INV_W
-#define INV_W 18
-#endif
-#ifndef SQRT_W
-#define SQRT_W 0
-#endif
-#ifndef TAG_W
-#define TAG_W 8
-#endif
+#include "tb_base.h"
 
 namespace {
 
@@ -48,18 +23,7 @@ using fixed::i64;
 using fixed::u128;
 using sim::i128;
 
-ref::HwParams make_params() {
-  ref::HwParams p;
-  p.coord_w = COORD_W;
-  p.dir_frac = DIR_FRAC;
-  p.t_frac = T_FRAC;
-  p.inv_w = INV_W;
-  p.sqrt_w = SQRT_W;
-  p.validate();
-  return p;
-}
-
-const ref::HwParams kP = make_params();
+const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
 const int R2W = 2 * CW + 1, TcW = CW + 4, HcW = CW + 3, TW = kP.t_w();
 constexpr int kInvSW = 7;
@@ -75,17 +39,18 @@ const ref::SegmentDesc* keep(const ref::SegmentDesc& s) {
   return &g_segments.back();
 }
 
+struct Expected {
+  ref::SearchInterval si;
+  bool ovf = false;
+};
 struct Item {
   Source src;
   int i = 0, j = 0, seg = 0;  // pixel and segment (scene sources), or vector index
   ref::IVec3 eye, vhat;
   const ref::SegmentDesc* s = nullptr;
+  Expected want;
 };
 
-struct Expected {
-  ref::SearchInterval si;
-  bool ovf = false;
-};
 Expected expected(const Item& it) {
   Expected e;
   fixed::Overflow ovf;
@@ -93,37 +58,6 @@ Expected expected(const Item& it) {
   e.ovf = ovf.flag;
   return e;
 }
-
-// Packing {z, y, x} of `w`-bit components into a port, and back.
-template <class P>
-void put_vec(P& port, i128 x, i128 y, i128 z, int w) {
-  const u128 m = fixed::max_unsigned(w);
-  const u128 u = (static_cast<u128>(x) & m) | ((static_cast<u128>(y) & m) << w) |
-                 ((static_cast<u128>(z) & m) << (2 * w));
-  sim::put(port, static_cast<i128>(u), 3 * w);
-}
-template <class P>
-ref::WVec3 get_vec(const P& port, int w) {
-  const u128 u = sim::get_unsigned(port, 3 * w);
-  const auto comp = [&](int k) {
-    const u128 c = (u >> (k * w)) & fixed::max_unsigned(w), sign = u128{1} << (w - 1);
-    return static_cast<i128>((c ^ sign) - sign);
-  };
-  return {comp(0), comp(1), comp(2)};
-}
-
-std::string str(i128 v) { return sim::to_string(v); }
-std::string str(const ref::WVec3& v) {
-  std::string s("(");  // appended piecewise (GCC 12 warns falsely on "(" + std::string)
-  s += str(v.x);
-  s += ", ";
-  s += str(v.y);
-  s += ", ";
-  s += str(v.z);
-  s += ")";
-  return s;
-}
-std::string str(const ref::IVec3& v) { return str(ref::WVec3{v.x, v.y, v.z}); }
 
 bool fits3(const ref::IVec3& v, int w) {
   return fixed::fits_signed(v.x, w) && fixed::fits_signed(v.y, w) && fixed::fits_signed(v.z, w);
@@ -187,22 +121,17 @@ scene::Scene random_scene(std::mt19937_64& rng, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_sphere");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_sphere>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_sphere");
-  std::mt19937_64 rng(seed);
+  sim::Testbench<Vrpu_sphere> tb("tb_rpu_sphere", argc, argv);
+  auto& rng = tb.rng;
   const ref::HwParams& p = kP;
   const int rad_w = p.sphere_radicand_w();
-  const long latency = ref::sphere_latency(p);
 
   std::vector<Item> items;
 
   // ---- curve12: every pair with pred1 (every pixel), and as many pairs without it from the
   // 2-pixel grid (RPU_VECTORS sets that count; at least the grid's misses drives every pair) ----
   {
-    const scene::CompiledScene sc = scene::compile_scene(
-        scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/curve12.json"));
+    const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
     const ref::ModelScene m = ref::quantize_scene(sc, p);
     std::vector<const ref::SegmentDesc*> segs;
     for (const ref::SegmentDesc& s : m.curve_segments) segs.push_back(keep(s));
@@ -222,7 +151,7 @@ int main(int argc, char** argv) {
         }
       }
     const long hits = static_cast<long>(grid_hit.size() + off_hit.size());
-    const long n_miss = std::min<long>(static_cast<long>(grid_miss.size()), sim::vector_count(hits));
+    const long n_miss = std::min<long>(static_cast<long>(grid_miss.size()), tb.vectors(hits));
     std::shuffle(grid_miss.begin(), grid_miss.end(), rng);
     std::printf("curve12: %zu segments; 2-pixel grid: %zu pairs, %zu with pred1; other pixels: %zu "
                 "pairs with pred1; driving every pair with pred1 and %ld of the grid's %zu without\n",
@@ -239,8 +168,7 @@ int main(int argc, char** argv) {
 
   // ---- ellipse6 has no curve segments: nothing for this unit ----
   {
-    const scene::CompiledScene sc = scene::compile_scene(
-        scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/ellipse6.json"));
+    const scene::CompiledScene sc = sim::compiled_demo_scene("ellipse6");
     std::printf("ellipse6: %zu curve segments (skipped)\n", sc.curve_segments.size());
   }
 
@@ -352,7 +280,7 @@ int main(int argc, char** argv) {
       const int b = 1 + static_cast<int>(rng() % w);
       return static_cast<i64>(rng() & ((u128{1} << b) - 1)) - (i64{1} << (b - 1));
     };
-    const long n = std::max<long>(20000, sim::vector_count(0) / 5);
+    const long n = std::max<long>(20000, tb.vectors(0) / 5);
     for (long k = 0; k < n; ++k) {
       ref::SegmentDesc s;
       s.c0 = {rnd_signed(CW), rnd_signed(CW), rnd_signed(CW)};
@@ -381,13 +309,12 @@ int main(int argc, char** argv) {
   // ---- statistics of what is driven ----
   long per_src[kSources] = {}, per_src_hit[kSources] = {}, per_src_ovf[kSources] = {};
   long inside = 0, sat_rad = 0, sat_miss = 0, all_hits = 0;
-  for (const Item& it : items) {
-    if (!fits_ports(it)) {
-      std::printf("FAILURE: a %s vector does not fit the ports (eye %s, vhat %s, R2 %s)\n",
-                  kSourceName[it.src], str(it.eye).c_str(), str(it.vhat).c_str(), str(it.s->R2).c_str());
-      return 1;
-    }
-    const Expected e = expected(it);
+  for (Item& it : items) {
+    if (!fits_ports(it))
+      return tb.fail("a %s vector does not fit the ports (eye %s, vhat %s, R2 %s)",
+                     kSourceName[it.src], sim::str(it.eye).c_str(), sim::str(it.vhat).c_str(),
+                     sim::str(it.s->R2).c_str());
+    const Expected e = it.want = expected(it);
     const ref::SegmentDesc& sg = *it.s;
     ++per_src[it.src];
     per_src_hit[it.src] += e.si.pred1;
@@ -407,115 +334,31 @@ int main(int argc, char** argv) {
   std::printf("  t1 clamped to the eye (eye inside the sphere): %ld; radicand saturated: %ld "
               "(%ld of them flagged without pred1)\n", inside, sat_rad, sat_miss);
 
-  // ---- drive and check ----
   std::shuffle(items.begin(), items.end(), rng);  // mix the sources
-  sim::reset(*top, *ctx);
-  struct Pending {
-    size_t index;
-    long cycle;
-    std::uint32_t tag;
-    Expected want;
+
+  sim::Stream<Vrpu_sphere, Item> s;
+  s.inputs = [&](sim::Inputs& in, Vrpu_sphere& t, const Item& it) {
+    const ref::SegmentDesc& sg = *it.s;
+    in.vec("eye", t.eye_i, it.eye, CW).vec("vhat", t.vhat_i, it.vhat, DirW).vec("c0", t.c0_i, sg.c0, CW);
+    in("R2", t.r2_i, sg.R2, R2W).vec("p1", t.p1_i, sg.p1, CW).vec("d", t.d_i, sg.d, DiffW);
+    in("inv_m", t.inv_m_i, sg.inv_m, kP.inv_w)("inv_s", t.inv_s_i, sg.inv_s, kInvSW);
   };
-  std::deque<Pending> pending;
-  const u128 tag_mask = fixed::max_unsigned(TAG_W);
-  long matched = 0, cycle = 0;
-  size_t next = 0;
-  const long total = static_cast<long>(items.size());
-  const auto junk = [&] { return static_cast<i128>((static_cast<u128>(rng()) << 64) | rng()); };
-  while (matched < total) {
-    const bool issue = next < items.size() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      const Item& it = items[next];
-      const ref::SegmentDesc& sg = *it.s;
-      put_vec(top->eye_i, it.eye.x, it.eye.y, it.eye.z, CW);
-      put_vec(top->vhat_i, it.vhat.x, it.vhat.y, it.vhat.z, DirW);
-      put_vec(top->c0_i, sg.c0.x, sg.c0.y, sg.c0.z, CW);
-      sim::put(top->r2_i, sg.R2, R2W);
-      put_vec(top->p1_i, sg.p1.x, sg.p1.y, sg.p1.z, CW);
-      put_vec(top->d_i, sg.d.x, sg.d.y, sg.d.z, DiffW);
-      sim::put(top->inv_m_i, sg.inv_m, kP.inv_w);
-      sim::put(top->inv_s_i, sg.inv_s, kInvSW);
-      const std::uint32_t tag = static_cast<std::uint32_t>(next & tag_mask);
-      sim::put(top->tag_i, tag, TAG_W);
-      pending.push_back({next, cycle, tag, expected(it)});
-      ++next;
-    } else {  // junk on the data inputs: nothing may depend on them
-      put_vec(top->eye_i, junk(), junk(), junk(), CW);
-      put_vec(top->vhat_i, junk(), junk(), junk(), DirW);
-      put_vec(top->c0_i, junk(), junk(), junk(), CW);
-      sim::put(top->r2_i, junk() & static_cast<i128>(fixed::max_unsigned(R2W)), R2W);
-      put_vec(top->p1_i, junk(), junk(), junk(), CW);
-      put_vec(top->d_i, junk(), junk(), junk(), DiffW);
-      sim::put(top->inv_m_i, junk() & static_cast<i128>(fixed::max_unsigned(kP.inv_w)), kP.inv_w);
-      sim::put(top->inv_s_i, junk() & 0x7F, kInvSW);
-      sim::put(top->tag_i, junk() & static_cast<i128>(tag_mask), TAG_W);
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (pending.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no operand outstanding\n", cycle);
-        return 1;
-      }
-      const Pending pd = pending.front();
-      pending.pop_front();
-      const Item& it = items[pd.index];
-      const ref::SearchInterval& w = pd.want.si;
-      const bool want_ovf = pd.want.ovf;
-      ref::SearchInterval got;
-      got.pred1 = top->pred1_o;
-      got.tc = sim::get_signed(top->tc_o, TcW);
-      got.half_chord = static_cast<i128>(sim::get_unsigned(top->half_chord_o, HcW));
-      got.A = get_vec(top->a_o, CW);
-      got.B = get_vec(top->b_o, CW);
-      got.AB = get_vec(top->ab_o, DiffW);
-      got.alpha = sim::get_signed(top->alpha_o, TW);
-      got.beta = sim::get_signed(top->beta_o, TW);
-      const bool got_ovf = top->ovf_o;
-      const std::uint32_t got_tag = static_cast<std::uint32_t>(sim::get_unsigned(top->tag_o, TAG_W));
-      const char* field = nullptr;
-      if (cycle - pd.cycle != latency) field = "latency";
-      else if (got_tag != pd.tag) field = "tag";
-      else if (got.pred1 != w.pred1) field = "pred1";
-      else if (got.tc != w.tc) field = "tc";
-      else if (got.half_chord != w.half_chord) field = "half_chord";
-      else if (got_ovf != want_ovf) field = "overflow";
-      else if (w.pred1 && !(got.A == w.A)) field = "A";
-      else if (w.pred1 && !(got.B == w.B)) field = "B";
-      else if (w.pred1 && !(got.AB == w.AB)) field = "AB";
-      else if (w.pred1 && got.alpha != w.alpha) field = "alpha";
-      else if (w.pred1 && got.beta != w.beta) field = "beta";
-      if (field) {
-        std::printf("FAILURE cycle %ld item %zu (%s, pixel (%d, %d), segment %d): %s differs "
-                    "(issued at cycle %ld, latency %ld expected %ld; tag %u expected %u)\n",
-                    cycle, pd.index, kSourceName[it.src], it.i, it.j, it.seg, field, pd.cycle,
-                    cycle - pd.cycle, latency, got_tag, pd.tag);
-        std::printf("  inputs:   eye %s vhat %s c0 %s R2 %s p1 %s d %s inv_m %lld inv_s %d\n",
-                    str(it.eye).c_str(), str(it.vhat).c_str(), str(it.s->c0).c_str(),
-                    str(it.s->R2).c_str(), str(it.s->p1).c_str(), str(it.s->d).c_str(),
-                    static_cast<long long>(it.s->inv_m), it.s->inv_s);
-        for (int k = 0; k < 2; ++k) {
-          const ref::SearchInterval& v = k == 0 ? w : got;
-          std::printf("  %s pred1 %d tc %s half_chord %s A %s B %s AB %s alpha %s beta %s "
-                      "overflow %d\n",
-                      k == 0 ? "expected:" : "actual:  ", v.pred1, str(v.tc).c_str(),
-                      str(v.half_chord).c_str(), str(v.A).c_str(), str(v.B).c_str(),
-                      str(v.AB).c_str(), str(v.alpha).c_str(), str(v.beta).c_str(),
-                      k == 0 ? want_ovf : got_ovf);
-        }
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("rpu_sphere CoordW=%d DirFrac=%d TFrac=%d InvW=%d SqrtW=%d: latency %ld, matched %ld "
-              "items (%ld with pred1) in %ld cycles\n",
-              CW, FV, kP.t_frac, kP.inv_w, kP.sqrt_w, latency, matched, all_hits, cycle);
-  return 0;
+  s.outputs = [&](sim::Outputs& o, const Vrpu_sphere& t, const Item& it) {
+    const ref::SearchInterval& w = it.want.si;
+    o("pred1", t.pred1_o, w.pred1, 1).s("tc", t.tc_o, w.tc, TcW);
+    o("half_chord", t.half_chord_o, w.half_chord, HcW)("overflow", t.ovf_o, it.want.ovf, 1);
+    o.vec("A", t.a_o, w.A, CW, w.pred1).vec("B", t.b_o, w.B, CW, w.pred1);
+    o.vec("AB", t.ab_o, w.AB, DiffW, w.pred1).s("alpha", t.alpha_o, w.alpha, TW, w.pred1);
+    o.s("beta", t.beta_o, w.beta, TW, w.pred1);
+  };
+  s.what = [](const Item& it) {
+    return std::string(kSourceName[it.src]) + ", pixel (" + std::to_string(it.i) + ", " +
+           std::to_string(it.j) + "), segment " + std::to_string(it.seg);
+  };
+  s.latency = ref::sphere_latency(p);
+  s.tag_w = TAG_W;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass("CoordW=%d DirFrac=%d TFrac=%d InvW=%d SqrtW=%d, latency %ld, %ld with pred1", CW,
+                 FV, kP.t_frac, kP.inv_w, kP.sqrt_w, s.latency, all_hits);
 }
