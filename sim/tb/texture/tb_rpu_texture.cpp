@@ -14,48 +14,18 @@
 // on (or one LSB off) an end plane and w0_2 exactly at (or one off) |p0 − p1|², |p0 − p2|² or
 // |X − p0|²: the equality cases of every comparison (a quarter of them with p0 far along the
 // plane and w0_2 at |X − p0|²; a third of them with the axes rotated so that z carries data).
-// RPU_VECTORS sets the pair count (default 100,000).
-// Random valid gaps with junk on every data input between pairs; pr1, pr2, pr3, covers, t̂, X,
-// the overflow bit, the tag and the latency compared for every pair, in order.
+// RPU_VECTORS sets the pair count (default 100,000). pr1, pr2, pr3, covers, t̂, X, the overflow
+// bit, the tag and the latency compared for every pair.
 #include <algorithm>
 #include <cmath>
-#include <deque>
-#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
 
 #include "Vrpu_texture.h"
-#include "model/descriptors.h"
-#include "model/units.h"
-#include "scene/camera.h"
 #include "scene/classification_grid.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
 #include "scene/segment.h"
-#include "tb_common.h"
-
-#ifndef RPU_SOURCE_DIR
-#error "RPU_SOURCE_DIR must be defined (see sim/tests/texture/rpu_texture.cmake)"
-#endif
-#ifndef COORD_W
-#define COORD_W 24
-#endif
-#ifndef T_FRAC
-#define T_FRAC 24
-#endif
-#ifndef UNIT_FRAC
-#define UNIT_FRAC 16
-#endif
-#ifndef INV_W
-#define INV_W 18
-#endif
-#ifndef SQRT_W
-#define SQRT_W 0
-#endif
-#ifndef TAG_W
-#define TAG_W 1
-#endif
+#include "tb_base.h"
 
 namespace {
 
@@ -63,20 +33,9 @@ using namespace rpu;
 using sim::i128;
 using sim::u128;
 
-constexpr int kCw = COORD_W, kFt = T_FRAC, kTagW = TAG_W;
+constexpr int kCw = COORD_W, kFt = T_FRAC;
 constexpr int kTw = kFt + 3, kDw = kCw + 1, kUw = UNIT_FRAC + 2, kHw = kCw + 5;
 constexpr int kL2w = 2 * kCw + 3, kXw = kCw + 3, kW02w = 2 * kCw + 1, kInvW = INV_W;
-
-ref::HwParams make_params() {
-  ref::HwParams p;
-  p.coord_w = kCw;
-  p.t_frac = kFt;
-  p.unit_frac = UNIT_FRAC;
-  p.inv_w = INV_W;
-  p.sqrt_w = SQRT_W;
-  p.validate();
-  return p;
-}
 
 struct Scene {
   std::string name;
@@ -99,103 +58,35 @@ struct Item {
   ref::WVec3 p0;
   ref::TextureOut want;
   bool ovf;
-  std::uint64_t tag;
-  long issued;
 };
-
-i128 random_bits(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  return static_cast<i128>(bits & fixed::max_unsigned(width));
-}
-i128 random_signed(std::mt19937_64& rng, int width) {
-  const i128 u = random_bits(rng, width);
-  return u >= (i128{1} << (width - 1)) ? u - (i128{1} << width) : u;
-}
-
-std::string str(i128 x, i128 y, i128 z) {
-  return "(" + sim::to_string(x) + ", " + sim::to_string(y) + ", " + sim::to_string(z) + ")";
-}
-std::string str(const ref::IVec3& v) { return str(v.x, v.y, v.z); }
-std::string str(const ref::WVec3& v) { return str(v.x, v.y, v.z); }
-
-void drive_segment(Vrpu_texture& top, const ref::SegmentDesc& s) {
-  sim::put_vec3(top.p1_i, s.p1.x, s.p1.y, s.p1.z, kCw);
-  sim::put_vec3(top.d_i, s.d.x, s.d.y, s.d.z, kDw);
-  sim::put(top.l2_i, s.L2, kL2w);
-  sim::put(top.inv_m_i, s.inv_m, kInvW);
-  sim::put(top.inv_s_i, s.inv_s, 7);
-  const ref::GuideDesc& g1 = s.guide[0];
-  const ref::GuideDesc& g2 = s.guide[1];
-  top.mode1_i = static_cast<unsigned>(g1.mode);
-  sim::put(top.h1_i, g1.h, kHw);
-  sim::put(top.a1_i, g1.a, kCw);
-  sim::put(top.b1_i, g1.b, kFt);
-  sim::put_vec3(top.u1_i, g1.u.x, g1.u.y, g1.u.z, kUw);
-  top.mode2_i = static_cast<unsigned>(g2.mode);
-  sim::put(top.h2_i, g2.h, kHw);
-  sim::put(top.a2_i, g2.a, kCw);
-  sim::put(top.b2_i, g2.b, kFt);
-  sim::put_vec3(top.u2_i, g2.u.x, g2.u.y, g2.u.z, kUw);
-  sim::put(top.w0_2_i, s.w0_2, kW02w);
-}
-
-void drive_junk(Vrpu_texture& top, std::mt19937_64& rng) {
-  const auto r = [&](int w) { return random_bits(rng, w); };
-  sim::put_vec3(top.p0_i, r(kCw), r(kCw), r(kCw), kCw);
-  sim::put_vec3(top.p1_i, r(kCw), r(kCw), r(kCw), kCw);
-  sim::put_vec3(top.d_i, r(kDw), r(kDw), r(kDw), kDw);
-  sim::put(top.l2_i, r(kL2w), kL2w);
-  sim::put(top.inv_m_i, r(kInvW), kInvW);
-  sim::put(top.inv_s_i, r(7), 7);
-  top.mode1_i = static_cast<unsigned>(r(2));
-  sim::put(top.h1_i, r(kHw), kHw);
-  sim::put(top.a1_i, r(kCw), kCw);
-  sim::put(top.b1_i, r(kFt), kFt);
-  sim::put_vec3(top.u1_i, r(kUw), r(kUw), r(kUw), kUw);
-  top.mode2_i = static_cast<unsigned>(r(2));
-  sim::put(top.h2_i, r(kHw), kHw);
-  sim::put(top.a2_i, r(kCw), kCw);
-  sim::put(top.b2_i, r(kFt), kFt);
-  sim::put_vec3(top.u2_i, r(kUw), r(kUw), r(kUw), kUw);
-  sim::put(top.w0_2_i, r(kW02w), kW02w);
-  sim::put(top.tag_i, r(kTagW), kTagW);
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_texture");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_texture>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_texture");
-  std::mt19937_64 rng(seed);
-  const ref::HwParams p = make_params();
-  const int kLatency = ref::texture_latency(p);
+  sim::Testbench<Vrpu_texture> tb("tb_rpu_texture", argc, argv);
+  auto& rng = tb.rng;
+  const ref::HwParams p = sim::tb_params();
 
   std::vector<Scene> scenes;
   for (const char* name : {"ellipse6", "polyline9", "airfield"}) {
     Scene s;
     s.name = name;
-    s.sc = scene::compile_scene(
-        scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json"));
+    s.sc = sim::compiled_demo_scene(name);
     s.m = ref::quantize_scene(s.sc, p);
     s.grid = scene::ClassificationGrid::build(s.sc.texture_segments, 2.0, 2.0 / s.m.norm.scale);
     for (const ref::SegmentDesc& d : s.m.texture_segments)
-      if (d.w0_2 < 0 || d.w0_2 > static_cast<i128>(fixed::max_unsigned(kW02w))) {
-        std::printf("FAILURE: %s: w0_2 = %s does not fit %d bits\n", name,
-                    sim::to_string(d.w0_2).c_str(), kW02w);
-        return 1;
-      }
+      if (d.w0_2 < 0 || d.w0_2 > static_cast<i128>(fixed::max_unsigned(kW02w)))
+        return tb.fail("%s: w0_2 = %s does not fit %d bits", name, sim::str(d.w0_2).c_str(), kW02w);
     scenes.push_back(std::move(s));
   }
 
-  const long count = sim::vector_count(100000);
-  std::deque<Item> items;
+  const long count = tb.vectors(100000);
+  std::vector<Item> items;
   long per_source[7] = {}, per_scene[3] = {};
   const auto add_desc = [&](int k, size_t seg, const ref::SegmentDesc& s, int i, int j,
                             Source src, const ref::WVec3& p0) {
     fixed::Overflow ovf;
-    Item it{k, seg, s, i, j, src, p0, ref::texture_unit(p, s, p0, ovf), false, 0, 0};
+    Item it{k, seg, s, i, j, src, p0, ref::texture_unit(p, s, p0, ovf), false};
     it.ovf = ovf.flag;
     items.push_back(it);
     ++per_source[src];
@@ -210,8 +101,8 @@ int main(int argc, char** argv) {
     const size_t nseg = S.m.texture_segments.size();
     const unsigned kind = static_cast<unsigned>(rng() % 100);
     if (kind < 4) {  // p0 anywhere in the coordinate range (z = 0; 1 % with a z as well)
-      const ref::WVec3 p0{random_signed(rng, kCw), random_signed(rng, kCw),
-                          kind == 0 ? random_signed(rng, kCw) : 0};
+      const ref::WVec3 p0{sim::random_signed(rng, kCw), sim::random_signed(rng, kCw),
+                          kind == 0 ? sim::random_signed(rng, kCw) : 0};
       add(k, rng() % nseg, -1, -1, kind == 0 ? kRandomZ : kRandomP0, p0);
       continue;
     }
@@ -237,11 +128,7 @@ int main(int argc, char** argv) {
           const double x = std::uniform_real_distribution<double>(0, 1)(rng);
           const double h = L * ref::HwParams::kFlatRatio *
                            (1.0 + 1e-6 + std::ldexp(x, static_cast<int>(rng() % 7)));
-          g.a = static_cast<fixed::i64>(std::llround(static_cast<double>(s.L2) / (2.0 * h)));
-          g.b = static_cast<fixed::i64>(
-              std::llround(std::ldexp(static_cast<double>(s.L2) / (4.0 * h * h), kFt)));
-          g.h = 0;
-          g.mode = g.a > 0 ? ref::GuideMode::kFlat : ref::GuideMode::kStraight;
+          sim::set_flat_guide(g, s.L2, h, kFt);
           break;
         }
         case 0:
@@ -371,108 +258,50 @@ int main(int argc, char** argv) {
   }
   if (n_covers < count / 20 || n_edge_out < count / 50 || n_clamp_lo == 0 || n_clamp_hi == 0 ||
       n_ovf == 0 || n_plane_eq == 0 || n_w0_eq == 0) {
-    std::printf("FAILURE: the vectors are too weak: %ld covers, %ld pr1 ∧ ¬pr3 near the edge, "
-                "%ld / %ld clamped low / high, %ld overflows, %ld / %ld equality cases of %zu\n",
-                n_covers, n_edge_out, n_clamp_lo, n_clamp_hi, n_ovf, n_plane_eq, n_w0_eq,
-                items.size());
-    return 1;
+    return tb.fail("the vectors are too weak: %ld covers, %ld pr1 ∧ ¬pr3 near the edge, %ld / "
+                   "%ld clamped low / high, %ld overflows, %ld / %ld equality cases of %zu",
+                   n_covers, n_edge_out, n_clamp_lo, n_clamp_hi, n_ovf, n_plane_eq, n_w0_eq,
+                   items.size());
   }
 
-  sim::reset(*top, *ctx);
-  std::deque<Item> expected;
-  long matched = 0, cycle = 0;
-  std::uint64_t tag = 0;
-  const std::uint64_t tag_mask = kTagW >= 64 ? ~0ull : (1ull << kTagW) - 1;
-  const long total = static_cast<long>(items.size());
-  while (matched < total) {
-    const bool issue = !items.empty() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      Item it = items.front();
-      items.pop_front();
-      sim::put_vec3(top->p0_i, it.p0.x, it.p0.y, it.p0.z, kCw);
-      drive_segment(*top, it.desc);
-      it.tag = tag++ & tag_mask;
-      it.issued = cycle;
-      sim::put(top->tag_i, static_cast<i128>(it.tag), kTagW);
-      expected.push_back(it);
-    } else {
-      drive_junk(*top, rng);
+  sim::Stream<Vrpu_texture, Item> s;
+  s.inputs = [](sim::Inputs& in, Vrpu_texture& t, const Item& it) {
+    const ref::SegmentDesc& d = it.desc;
+    in.vec("p0", t.p0_i, it.p0, kCw).vec("p1", t.p1_i, d.p1, kCw).vec("d", t.d_i, d.d, kDw);
+    in("L2", t.l2_i, d.L2, kL2w)("inv_m", t.inv_m_i, d.inv_m, kInvW)("inv_s", t.inv_s_i, d.inv_s, 7);
+    for (int k = 0; k < 2; ++k) {
+      const ref::GuideDesc& g = d.guide[k];
+      in(k ? "mode2" : "mode1", k ? t.mode2_i : t.mode1_i, static_cast<int>(g.mode), 2);
+      in(k ? "h2" : "h1", k ? t.h2_i : t.h1_i, g.h, kHw)(k ? "a2" : "a1", k ? t.a2_i : t.a1_i, g.a, kCw);
+      in(k ? "b2" : "b1", k ? t.b2_i : t.b1_i, g.b, kFt).vec(k ? "u2" : "u1", k ? t.u2_i : t.u1_i, g.u, kUw);
     }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (expected.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no pair outstanding\n", cycle);
-        return 1;
-      }
-      const Item it = expected.front();
-      expected.pop_front();
-      const ref::TextureOut& w = it.want;
-      const i128 t = sim::get_signed(top->t_o, kTw);
-      const ref::WVec3 X{sim::get_comp(top->x_o, 0, kXw), sim::get_comp(top->x_o, 1, kXw),
-                         sim::get_comp(top->x_o, 2, kXw)};
-      const bool pr1 = top->pr1_o, pr2 = top->pr2_o, pr3 = top->pr3_o, covers = top->covers_o,
-                 ovf = top->ovf_o;
-      const std::uint64_t got_tag =
-          static_cast<std::uint64_t>(sim::get_unsigned(top->tag_o, kTagW));
-      const bool ok = pr1 == w.pr1 && pr2 == w.pr2 && pr3 == w.pr3 && covers == w.covers &&
-                      t == w.t && X == w.X && ovf == it.ovf && got_tag == it.tag &&
-                      cycle - it.issued == kLatency;
-      if (!ok) {
-        const Scene& S = scenes[static_cast<size_t>(it.scene)];
-        const ref::SegmentDesc& s = it.desc;
-        std::printf(
-            "FAILURE cycle %ld item %ld: %s segment %zu (%s), pixel (%d, %d)\n"
-            "  inputs   p0 %s p1 %s d %s L2 %s inv_m %lld inv_s %d w0_2 %s\n"
-            "           guide 1 mode %d h %lld a %lld b %lld u %s; guide 2 mode %d h %lld a %lld "
-            "b %lld u %s; tag %llu\n"
-            "  expected pr1 %d pr2 %d pr3 %d covers %d t %s X %s ovf %d latency %d\n"
-            "  actual   pr1 %d pr2 %d pr3 %d covers %d t %s X %s ovf %d latency %ld tag %llu\n",
-            cycle, matched, S.name.c_str(), it.seg, kSourceName[it.source], it.i, it.j,
-            str(it.p0).c_str(), str(s.p1).c_str(), str(s.d).c_str(), sim::to_string(s.L2).c_str(),
-            static_cast<long long>(s.inv_m), s.inv_s, sim::to_string(s.w0_2).c_str(),
-            static_cast<int>(s.guide[0].mode), static_cast<long long>(s.guide[0].h),
-            static_cast<long long>(s.guide[0].a), static_cast<long long>(s.guide[0].b),
-            str(s.guide[0].u).c_str(), static_cast<int>(s.guide[1].mode),
-            static_cast<long long>(s.guide[1].h), static_cast<long long>(s.guide[1].a),
-            static_cast<long long>(s.guide[1].b), str(s.guide[1].u).c_str(),
-            static_cast<unsigned long long>(it.tag), w.pr1, w.pr2, w.pr3, w.covers,
-            sim::to_string(w.t).c_str(), str(w.X).c_str(), it.ovf, kLatency, pr1, pr2, pr3,
-            covers, sim::to_string(t).c_str(), str(X).c_str(), ovf, cycle - it.issued,
-            static_cast<unsigned long long>(got_tag));
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
-  top->valid_i = 0;
-  for (int k = 0; k < kLatency + 4; ++k) {
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      std::printf("FAILURE cycle %ld: spurious valid_o after the last pair\n", cycle);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("rpu_texture CoordW=%d TFrac=%d UnitFrac=%d InvW=%d SqrtW=%d latency %d: matched %ld "
-              "items in %ld cycles\n"
-              "  scenes: %ld ellipse6, %ld polyline9, %ld airfield; segments: %ld grid, %ld grid "
-              "neighbour, %ld random; %ld random p0 (%ld with z), %ld descriptor edges, %ld "
-              "exact boundaries\n"
-              "  covers %ld, pr1 %ld, pr2 %ld, pr3 %ld, pr1 ∧ ¬pr3 %ld (%ld within 2·w0 of X), "
-              "pr3 with |X − p0| ≥ w0/2 %ld, (p0 − p1)·d clamped low %ld / high %ld, ovf %ld\n"
+    in("w0_2", t.w0_2_i, d.w0_2, kW02w);
+  };
+  s.outputs = [](sim::Outputs& o, const Vrpu_texture& t, const Item& it) {
+    const ref::TextureOut& w = it.want;
+    o("pr1", t.pr1_o, w.pr1, 1)("pr2", t.pr2_o, w.pr2, 1)("pr3", t.pr3_o, w.pr3, 1);
+    o("covers", t.covers_o, w.covers, 1).s("t", t.t_o, w.t, kTw).vec("X", t.x_o, w.X, kXw);
+    o("ovf", t.ovf_o, it.ovf, 1);
+  };
+  s.what = [&](const Item& it) {
+    return scenes[static_cast<size_t>(it.scene)].name + " segment " + std::to_string(it.seg) + " (" +
+           kSourceName[it.source] + "), pixel (" + std::to_string(it.i) + ", " + std::to_string(it.j) + ")";
+  };
+  s.latency = ref::texture_latency(p);
+  s.tag_w = TAG_W;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  std::printf("  scenes: %ld ellipse6, %ld polyline9, %ld airfield; segments: %ld grid, %ld grid "
+              "neighbour, %ld random; %ld random p0 (%ld with z), %ld descriptor edges, %ld exact "
+              "boundaries\n"
+              "  covers %ld, pr1 %ld, pr2 %ld, pr3 %ld, pr1 ∧ ¬pr3 %ld (%ld within 2·w0 of X), pr3 "
+              "with |X − p0| ≥ w0/2 %ld, (p0 − p1)·d clamped low %ld / high %ld, ovf %ld\n"
               "  equal: (p0 − p1)·d ∈ {0, L2} %ld, w0_2 ∈ {|r1|², |r2|², |X − p0|²} %ld\n",
-              kCw, kFt, UNIT_FRAC, kInvW, SQRT_W, kLatency, matched, cycle, per_scene[0],
-              per_scene[1], per_scene[2], per_source[kGrid], per_source[kNeighbour],
+              per_scene[0], per_scene[1], per_scene[2], per_source[kGrid], per_source[kNeighbour],
               per_source[kRandomSeg], per_source[kRandomP0] + per_source[kRandomZ],
-              per_source[kRandomZ], per_source[kPortEdge], per_source[kExact], n_covers, n_pr1, n_pr2, n_pr3,
-              n_pr1_not3, n_edge_out, n_edge_in, n_clamp_lo, n_clamp_hi, n_ovf, n_plane_eq,
-              n_w0_eq);
-  return 0;
+              per_source[kRandomZ], per_source[kPortEdge], per_source[kExact], n_covers, n_pr1,
+              n_pr2, n_pr3, n_pr1_not3, n_edge_out, n_edge_in, n_clamp_lo, n_clamp_hi, n_ovf,
+              n_plane_eq, n_w0_eq);
+  return tb.pass("CoordW=%d TFrac=%d UnitFrac=%d InvW=%d SqrtW=%d latency %ld", kCw, kFt, UNIT_FRAC,
+                 kInvW, SQRT_W, s.latency);
 }

@@ -8,13 +8,11 @@
 // a cycle in which the output was held (full throughput otherwise) and never follows the inputs
 // combinationally; no output after the last. In "rude" phases the driver puts garbage on the
 // input with valid_i high whenever ready_o is low: it must not be taken.
-#include <deque>
-#include <memory>
 #include <vector>
 
 #include "Vrpu_resolve.h"
 #include "model/units.h"
-#include "tb_common.h"
+#include "tb_base.h"
 
 #ifndef PIX_W
 #define PIX_W 28
@@ -25,8 +23,6 @@
 #ifndef PRIM_W
 #define PRIM_W 16
 #endif
-
-namespace {
 
 using namespace rpu;
 using sim::i128;
@@ -49,38 +45,19 @@ struct Pixel {
   std::int32_t prim;
 };
 
-i128 sign_extend(u128 bits, int w) {
-  const u128 m = w >= 128 ? ~u128{0} : (u128{1} << w) - 1;
-  const u128 sign = u128{1} << (w - 1);
-  return static_cast<i128>(((bits & m) ^ sign) - sign);
-}
+struct Item {  // one work item as the unit takes it
+  size_t pix;  // its pixel (pixels[pix]: the expected result follows its last item)
+  WorkItem w;
+  bool last;
+};
 
-u128 mask(int w) { return w >= 128 ? ~u128{0} : (u128{1} << w) - 1; }
-
-// Writes a `w`-bit field, upper bits of the port cleared.
-template <class T>
-void put_field(T& port, i128 v, int w) {
-  sim::put(port, static_cast<i128>(static_cast<u128>(v) & mask(w)), w);
-}
-
-std::string hex(u128 v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%llx%016llx", static_cast<unsigned long long>(v >> 64),
-                static_cast<unsigned long long>(v));
-  std::string s(buf);
-  const auto nz = s.find_first_not_of('0');
-  return "0x" + (nz == std::string::npos ? std::string("0") : s.substr(nz));
-}
-
-}  // namespace
+u128 mask(int w) { return sim::low_bits(~u128{0}, w); }
+i128 sign_extend(u128 bits, int w) { return sim::sign_extend(bits, w); }
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_resolve");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_resolve>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_resolve");
-  std::mt19937_64 rng(seed);
-  const long count = sim::vector_count(100000);
+  sim::Testbench<Vrpu_resolve> tb("tb_rpu_resolve", argc, argv);
+  auto& rng = tb.rng;
+  const long count = tb.vectors(100000);
   const auto pct = [&](int p) { return static_cast<int>(rng() % 100) < p; };
   const auto rand128 = [&] { return (static_cast<u128>(rng()) << 64) | rng(); };
 
@@ -144,156 +121,51 @@ int main(int argc, char** argv) {
     pixels.push_back(std::move(px));
   }
 
-  // ---- simulation ----
-  top->valid_i = 0;
-  top->ready_i = 0;
-  top->last_i = 0;
-  top->hit_i = 0;
-  sim::reset(*top, *ctx);
+  std::vector<Item> items;
+  for (size_t k = 0; k < pixels.size(); ++k)
+    for (size_t m = 0; m < pixels[k].items.size(); ++m)
+      items.push_back({k, pixels[k].items[m], m + 1 == pixels[k].items.size()});
 
-  const auto report_pixel = [&](const Pixel& px) {
-    std::printf("  inputs: pixel %s, %zu work items {hit, depth, primitive}:\n",
-                hex(px.pixel).c_str(), px.items.size());
-    for (const WorkItem& it : px.items)
-      std::printf("    {%d, %s, %d}\n", it.hit, sim::to_string(it.depth).c_str(), it.prim);
-    std::printf("  expected: pixel %s any_hit %d depth %s primitive %d\n", hex(px.pixel).c_str(),
-                px.any, sim::to_string(px.depth).c_str(), px.prim);
+  // Random valid_i gaps and ready_i backpressure in phases (from a free-flowing consumer to long
+  // stalls); in "rude" phases garbage with valid_i high whenever ready_o is low (not to be taken).
+  sim::Stream<Vrpu_resolve, Item> s;
+  s.inputs = [&](sim::Inputs& in, Vrpu_resolve& t, const Item& it) {
+    in("pixel", t.pixel_i, static_cast<i128>(pixels[it.pix].pixel), kPixW);
+    in("last", t.last_i, it.last, 1)("hit", t.hit_i, it.w.hit, 1);
+    in("depth", t.depth_i, it.w.depth, kDepthW)("primitive", t.primitive_i, it.w.prim, kPrimW);
   };
-
-  size_t in_pix = 0, in_item = 0;  // next work item to present
-  size_t out_pix = 0;              // next expected result
-  bool presenting = false;
-  int valid_pct = 100, ready_pct = 100;
-  bool rude = false;
-  long phase_left = 0, cycle = 0, stall_cycles = 0;
-  bool held = false;  // last cycle ended with valid_o && !ready_i
-  u128 held_pixel = 0;
-  i128 held_depth = 0;
-  unsigned held_any = 0, held_prim = 0;
-  bool prev_ready_i = true;
-  const long limit = 40 * n_items + 10000;
-
-  while (out_pix < pixels.size()) {
-    if (phase_left-- <= 0) {  // a new traffic phase
-      phase_left = 1 + static_cast<long>(rng() % 3000);
-      valid_pct = std::vector<int>{100, 100, 95, 70, 30, 5}[rng() % 6];
-      ready_pct = std::vector<int>{100, 100, 95, 70, 50, 20, 3, 0}[rng() % 8];
-      rude = pct(30);
-      if (ready_pct == 0) phase_left = 1 + phase_left % 40;  // a full stall, short
-    }
-    // Input: a presented item stays on valid_i, unchanged, until it is taken. In "rude" phases
-    // the driver breaks that rule while ready_o is low (ready_o is a register, so it is known
-    // before the inputs are driven): valid_i high with garbage, which must not be taken.
-    if (!presenting && in_pix < pixels.size() && pct(valid_pct)) presenting = true;
-    const bool ready_before = top->ready_o;
-    const bool garbage = rude && !ready_before && pct(70);
-    top->valid_i = presenting || garbage;
-    if (presenting && !garbage) {
-      const Pixel& px = pixels[in_pix];
-      const WorkItem& it = px.items[in_item];
-      put_field(top->pixel_i, static_cast<i128>(px.pixel), kPixW);
-      top->last_i = in_item + 1 == px.items.size();
-      top->hit_i = it.hit;
-      put_field(top->depth_i, it.depth, kDepthW);
-      put_field(top->primitive_i, it.prim, kPrimW);
-    } else {  // garbage on the data lines while idle or not ready
-      put_field(top->pixel_i, static_cast<i128>(rand128()), kPixW);
-      top->last_i = rng() & 1;
-      top->hit_i = rng() & 1;
-      put_field(top->depth_i, any_depth(), kDepthW);
-      put_field(top->primitive_i, static_cast<i128>(rng()), kPrimW);
-    }
-    const bool ready_i = pct(ready_pct);
-    top->ready_i = ready_i;
-    top->clk_i = 0;
-    top->eval();
-
-    const bool valid_o = top->valid_o, ready_o = top->ready_o;
-    const u128 o_pixel = sim::get_unsigned(top->pixel_o, kPixW);
-    const unsigned o_any = top->any_hit_o;
-    const i128 o_depth = sim::get_signed(top->depth_o, kDepthW);
-    const unsigned o_prim = static_cast<unsigned>(sim::get_unsigned(top->primitive_o, kPrimW));
-
-    // Protocol: a held output stays valid and unchanged; ready_o drops only after a hold.
-    if (held && (!valid_o || o_pixel != held_pixel || o_any != held_any || o_depth != held_depth ||
-                 o_prim != held_prim)) {
-      std::printf("FAILURE cycle %ld: output changed while held (valid_o && !ready_i)\n"
-                  "  held:  pixel %s any_hit %u depth %s primitive %u\n"
-                  "  now:   valid %d pixel %s any_hit %u depth %s primitive %u\n",
-                  cycle, hex(held_pixel).c_str(), held_any, sim::to_string(held_depth).c_str(),
-                  held_prim, valid_o, hex(o_pixel).c_str(), o_any, sim::to_string(o_depth).c_str(),
-                  o_prim);
-      return 1;
-    }
-    if (ready_o != ready_before) {
-      std::printf("FAILURE cycle %ld: ready_o depends combinationally on the inputs\n", cycle);
-      return 1;
-    }
-    if (!ready_o && prev_ready_i) {
-      std::printf("FAILURE cycle %ld: ready_o low although ready_i was high last cycle\n", cycle);
-      return 1;
-    }
-
-    if (valid_o && ready_i) {  // output handshake: the scoreboard
-      if (out_pix >= pixels.size()) {
-        std::printf("FAILURE cycle %ld: extra result pixel %s after all %zu expected\n", cycle,
-                    hex(o_pixel).c_str(), pixels.size());
-        return 1;
-      }
-      const Pixel& px = pixels[out_pix];
-      if (o_pixel != px.pixel || o_any != static_cast<unsigned>(px.any) || o_depth != px.depth ||
-          o_prim != static_cast<unsigned>(px.prim)) {
-        std::printf("FAILURE cycle %ld result %zu (lost, duplicated, reordered or wrong):\n", cycle,
-                    out_pix);
-        report_pixel(px);
-        std::printf("  actual:   pixel %s any_hit %u depth %s primitive %u\n",
-                    hex(o_pixel).c_str(), o_any, sim::to_string(o_depth).c_str(), o_prim);
-        return 1;
-      }
-      ++out_pix;
-    }
-    held = valid_o && !ready_i;
-    held_pixel = o_pixel;
-    held_any = o_any;
-    held_depth = o_depth;
-    held_prim = o_prim;
-    prev_ready_i = ready_i;
-    if (!ready_o) ++stall_cycles;
-    if (presenting && !garbage && ready_o) {  // input handshake
-      presenting = false;
-      if (++in_item == pixels[in_pix].items.size()) {
-        in_item = 0;
-        ++in_pix;
-      }
-    }
-
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (cycle > limit) {
-      std::printf("FAILURE: timeout at cycle %ld, %zu of %zu results, %zu of %zu pixels issued\n",
-                  cycle, out_pix, pixels.size(), in_pix, pixels.size());
-      return 1;
-    }
-  }
-  // Drained: nothing more may come out.
-  top->valid_i = 0;
-  top->ready_i = 1;
-  for (int k = 0; k < 64; ++k) {
-    top->clk_i = 0;
-    top->eval();
-    if (top->valid_o) {
-      std::printf("FAILURE cycle %ld: extra result pixel %s after all %zu expected\n", cycle,
-                  hex(sim::get_unsigned(top->pixel_o, kPixW)).c_str(), pixels.size());
-      return 1;
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-  }
-  top->final();
-  std::printf("rpu_resolve (PixW %d, DepthW %d, PrimW %d): matched %zu items (pixel results; %ld "
-              "pixels drawn, %ld without work items; %ld work items, %ld hits, %ld depth ties, %ld "
-              "depth+id ties, %ld pixels without a hit) in %ld cycles, ready_o low %ld cycles\n",
-              kPixW, kDepthW, kPrimW, out_pix, count, n_empty, n_items, n_hits, n_depth_ties,
-              n_full_ties, n_nohit, cycle, stall_cycles);
-  return 0;
+  s.outputs = [&](sim::Outputs& o, const Vrpu_resolve& t, const Item& it) {
+    const Pixel& px = pixels[it.pix];
+    o("pixel", t.pixel_o, static_cast<i128>(px.pixel), kPixW)("any_hit", t.any_hit_o, px.any, 1);
+    o.s("depth", t.depth_o, px.depth, kDepthW)("primitive", t.primitive_o, px.prim, kPrimW);
+  };
+  s.yields = [](const Item& it) { return it.last; };
+  s.what = [&](const Item& it) {
+    std::string w = "pixel result " + std::to_string(it.pix) + " of " +
+                    std::to_string(pixels[it.pix].items.size()) + " work items {hit, depth, primitive}:";
+    for (const WorkItem& x : pixels[it.pix].items)
+      w += " {" + std::to_string(x.hit) + ", " + sim::str(x.depth) + ", " + std::to_string(x.prim) + "}";
+    return w;
+  };
+  s.traffic.phase_max = 3000;
+  s.traffic.valid_table = {100, 100, 95, 70, 30, 5};
+  s.traffic.ready_table = {100, 100, 95, 70, 50, 20, 3, 0};
+  s.traffic.rude_pct = 30;
+  s.timeout = 40 * static_cast<long>(items.size()) + 10000;
+  long stall_cycles = 0;  // ready_o only drops after a cycle with the output held
+  s.monitor = [&](const Vrpu_resolve& t, const sim::Cycle& c) -> std::string {
+    stall_cycles += !t.ready_o;
+    return !t.ready_o && c.prev_ready_i ? "ready_o low although ready_i was high last cycle" : "";
+  };
+  tb.top().valid_i = 0;
+  tb.top().ready_i = 0;
+  tb.top().last_i = 0;
+  tb.top().hit_i = 0;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass("pixel results: PixW %d, DepthW %d, PrimW %d; %ld pixels drawn, %ld without work "
+                 "items; %ld work items, %ld hits, %ld depth ties, %ld depth+id ties, %ld pixels "
+                 "without a hit; ready_o low %ld cycles",
+                 kPixW, kDepthW, kPrimW, count, n_empty, n_items, n_hits, n_depth_ties, n_full_ties,
+                 n_nohit, stall_cycles);
 }

@@ -15,9 +15,7 @@
 #include <string>
 
 #include "cosim.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
-#include "tb_common.h"
+#include "tb_base.h"
 #include "top_ports.h"
 
 using namespace rpu;
@@ -71,8 +69,7 @@ int main(int argc, char** argv) {
   scene::Scene scn;
   for (std::size_t at = 0, k = 0; at <= scene_name.size(); ++k) {
     const std::size_t end = std::min(scene_name.find('+', at), scene_name.size());
-    const scene::Scene part = scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" +
-                                                scene_name.substr(at, end - at) + ".json");
+    const scene::Scene part = sim::demo_scene(scene_name.substr(at, end - at));
     if (k == 0) {
       scn = part;
     } else {
