@@ -1,7 +1,6 @@
 // rpu_indicator against its twin rpu::ref::indicator_unit, bit for bit: the inside bit, the
 // per-lane turn bits, the angle and ρ of the trace, the overflow bit, the tag and the latency
-// (ref::indicator_latency) of every point, in order, with random valid gaps and junk on every
-// input between points.
+// (ref::indicator_latency) of every point.
 // Descriptors: every surface of scenes/surf_*.json (ellipsoid, relief, spiral, snail, rocket and
 // the mix's rotated, scaled relief and rocket) quantised with HwParams (SURF_W, ANGLE_W). Points,
 // in llsb of each surface:
@@ -24,35 +23,17 @@
 // branch), 5 % of them flipped. RPU_VECTORS sets the point count (default 40,000).
 #include <algorithm>
 #include <cmath>
-#include <deque>
-#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "Vrpu_indicator.h"
-#include "model/descriptors.h"
 #include "model/surface/rpu_indicator.h"
 #include "model/surface/rpu_indicator_latency.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
-#include "scene/surface_geometry.h"
-#include "tb_common.h"
+#include "tb_surface_common.h"
 
-#ifndef RPU_SOURCE_DIR
-#error "RPU_SOURCE_DIR must be defined (see sim/tests/surface/rpu_indicator.cmake)"
-#endif
-#ifndef SURF_W
-#define SURF_W 24
-#endif
-#ifndef ANGLE_W
-#define ANGLE_W 20
-#endif
 #ifndef LANES
 #define LANES 8
-#endif
-#ifndef TAG_W
-#define TAG_W 1
 #endif
 
 namespace {
@@ -62,21 +43,12 @@ using scene::SurfaceType;
 using sim::i128;
 using sim::u128;
 
-constexpr int kLw = SURF_W, kAw = ANGLE_W, kLanes = LANES, kTagW = TAG_W;
-constexpr int kKf = kLw, kMw = kLw + 2, kTurnW = kLw + 8, kCw = kLw + 6, kR2w = 2 * kLw + 1;
-constexpr int kShW = 8;
-
-ref::HwParams make_params() {
-  ref::HwParams p;
-  p.surf_w = kLw;
-  p.angle_w = kAw;
-  p.validate();
-  return p;
-}
+constexpr int kLw = SURF_W, kAw = ANGLE_W, kLanes = LANES;
+constexpr int kKf = kLw, kMw = kLw + 2, kTurnW = kLw + 8, kCw = kLw + 6;
 
 enum Source { kSphere, kSurface, kEdge, kRange, kEdited, kBoundary, kSources };
 const char* const kSourceName[] = {"sphere", "surface", "edge", "range", "edited", "boundary"};
-const char* const kTypeName[] = {"ellipsoid", "relief", "spiral", "snail", "rocket"};
+const char* const* const kTypeName = sim::kSurfaceTypeName;
 
 struct Item {
   int surf;  // index into surfaces
@@ -86,8 +58,6 @@ struct Item {
   bool x_negative, last_turn;
   bool inside, ovf;
   ref::IndicatorTrace trace;
-  std::uint64_t tag;
-  long issued;
 };
 
 struct Surf {
@@ -96,46 +66,11 @@ struct Surf {
   ref::SurfaceDesc desc;
 };
 
-i128 random_bits(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  return static_cast<i128>(bits & fixed::max_unsigned(width));
-}
-i128 random_signed(std::mt19937_64& rng, int width) {
-  const i128 u = random_bits(rng, width);
-  return u >= (i128{1} << (width - 1)) ? u - (i128{1} << width) : u;
-}
-// A signed value of a random bit length up to `width` (small and large magnitudes alike).
-i128 random_magnitude(std::mt19937_64& rng, int width) {
-  const int w = 1 + static_cast<int>(rng() % static_cast<unsigned>(width));
-  return random_signed(rng, w);
-}
 double uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 i128 clamp_lw(i128 v) {
   return std::clamp<i128>(v, fixed::min_signed(kLw), fixed::max_signed(kLw));
-}
-
-// A `width`-bit field into its port. sim::put writes a narrow (≤ 64-bit) port whole, so a negative
-// value would also set the port's bits above `width`; Verilator assumes them 0 and its word-level
-// code then ORs them into neighbouring fields (a negative rho0 corrupted the point's z).
-template <class Port>
-void put(Port& port, i128 v, int width) {
-  sim::put(port, static_cast<i128>(static_cast<u128>(v) & fixed::max_unsigned(width)), width);
-}
-
-std::string str(const ref::WVec3& v) {
-  // Appended piecewise: GCC 12's -Wrestrict misfires on the chained operator+ once inlined.
-  std::string s = "(";
-  s += sim::to_string(v.x);
-  s += ", ";
-  s += sim::to_string(v.y);
-  s += ", ";
-  s += sim::to_string(v.z);
-  return s + ")";
-}
-std::string str(const ref::ScaledConst& c) {
-  return std::to_string(c.m) + "·2^-" + std::to_string(c.s);
 }
 
 // Whether the descriptor fits the unit's ports and contract (the scenes' do; tb checks).
@@ -153,150 +88,42 @@ std::string port_problem(const ref::SurfaceDesc& s) {
   return "";
 }
 
-void drive_desc(Vrpu_indicator& top, const ref::SurfaceDesc& s) {
-  top.type_i = static_cast<unsigned>(s.type);
-  top.full_turns_i = static_cast<unsigned>(s.full_turns);
-  put(top.sx_i, s.sx, kKf + 1);
-  put(top.sy_i, s.sy, kKf + 1);
-  put(top.sz_i, s.sz, kKf + 1);
-  put(top.r2_i, s.r2, kR2w);
-  put(top.kd_i, s.kd, kKf + 2);
-  put(top.ke2_i, s.ke2, kKf + 2);
-  put(top.y_angle_m_i, s.y_angle.m, kMw);
-  put(top.y_angle_s_i, s.y_angle.s, kShW);
-  put(top.rho0_i, s.rho0, kLw);
-  put(top.a_turn_i, s.a_turn, kTurnW);
-  put(top.k_turn_i, s.k_turn, kTurnW);
-  put(top.rocket_a_i, s.rocket_a, kLw);
-  put(top.rocket_b_i, s.rocket_b, kLw);
-  put(top.fin_m_i, s.fin.m, kMw);
-  put(top.fin_s_i, s.fin.s, kShW);
-  put(top.cone_m_i, s.cone.m, kMw);
-  put(top.cone_s_i, s.cone.s, kShW);
-}
-
-void drive_junk(Vrpu_indicator& top, std::mt19937_64& rng) {
-  const auto r = [&](int w) { return random_bits(rng, w); };
-  top.type_i = static_cast<unsigned>(r(3));
-  sim::put_vec3(top.l_i, r(kLw), r(kLw), r(kLw), kLw);
-  top.x_negative_i = static_cast<unsigned>(r(1));
-  top.last_turn_i = static_cast<unsigned>(r(1));
-  top.full_turns_i = static_cast<unsigned>(r(4));
-  put(top.sx_i, r(kKf + 1), kKf + 1);
-  put(top.sy_i, r(kKf + 1), kKf + 1);
-  put(top.sz_i, r(kKf + 1), kKf + 1);
-  put(top.r2_i, r(kR2w), kR2w);
-  put(top.kd_i, r(kKf + 2), kKf + 2);
-  put(top.ke2_i, r(kKf + 2), kKf + 2);
-  put(top.y_angle_m_i, r(kMw), kMw);
-  put(top.y_angle_s_i, r(kShW), kShW);
-  put(top.rho0_i, r(kLw), kLw);
-  put(top.a_turn_i, r(kTurnW), kTurnW);
-  put(top.k_turn_i, r(kTurnW), kTurnW);
-  put(top.rocket_a_i, r(kLw), kLw);
-  put(top.rocket_b_i, r(kLw), kLw);
-  put(top.fin_m_i, r(kMw), kMw);
-  put(top.fin_s_i, r(kShW), kShW);
-  put(top.cone_m_i, r(kMw), kMw);
-  put(top.cone_s_i, r(kShW), kShW);
-  put(top.tag_i, r(kTagW), kTagW);
-}
-
-// The descriptor's fields redrawn within the port contract, its type kept.
-ref::SurfaceDesc edit(ref::SurfaceDesc s, std::mt19937_64& rng) {
-  const auto unit_scale = [&] {  // mostly in (0, 1], sometimes the whole port
-    return rng() % 4 == 0 ? random_bits(rng, kKf + 1)
-                          : 1 + random_bits(rng, kKf) % (i128{1} << kKf);
-  };
-  const auto scaled = [&] {
-    ref::ScaledConst c;
-    c.m = static_cast<std::int64_t>(random_magnitude(rng, kMw));
-    c.s = static_cast<int>(rng() % 4 == 0 ? rng() % 128 : rng() % static_cast<unsigned>(2 * kLw + 8));
-    return c;
-  };
-  const i128 r2_max = i128{1} << (2 * kLw);
-  const auto r2 = [&] {
-    return rng() % 8 == 0 ? r2_max - static_cast<i128>(rng() % 3)
-                          : random_bits(rng, 2 * kLw + 1) % (r2_max + 1);
-  };
-  switch (s.type) {
-    case SurfaceType::kEllipsoid:
-    case SurfaceType::kReliefEllipsoid:
-      s.sx = static_cast<std::int64_t>(unit_scale());
-      s.sy = static_cast<std::int64_t>(unit_scale());
-      s.sz = static_cast<std::int64_t>(unit_scale());
-      s.r2 = r2();
-      s.kd = static_cast<std::int64_t>(random_magnitude(rng, kKf + 2));
-      s.ke2 = static_cast<std::int64_t>(random_magnitude(rng, kKf + 2));
-      s.y_angle = scaled();
-      break;
-    case SurfaceType::kSpiral:
-      s.sx = static_cast<std::int64_t>(unit_scale());
-      s.sy = static_cast<std::int64_t>(unit_scale());
-      s.r2 = r2();
-      s.rho0 = static_cast<std::int64_t>(random_magnitude(rng, kLw));
-      [[fallthrough]];
-    case SurfaceType::kSnail:
-      s.a_turn = static_cast<std::int64_t>(random_magnitude(rng, kTurnW));
-      s.k_turn = static_cast<std::int64_t>(random_magnitude(rng, kTurnW));
-      s.full_turns = static_cast<int>(rng() % (kLanes + 1));
-      break;
-    case SurfaceType::kRocket:
-      s.rocket_a = static_cast<std::int64_t>(random_magnitude(rng, kLw));
-      s.rocket_b = static_cast<std::int64_t>(random_magnitude(rng, kLw));
-      s.fin = scaled();
-      s.cone = scaled();
-      break;
-  }
-  return s;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_indicator");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_indicator>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_indicator");
-  std::mt19937_64 rng(seed);
-  const ref::HwParams p = make_params();
+  sim::Testbench<Vrpu_indicator> tb("tb_rpu_indicator", argc, argv);
+  auto& rng = tb.rng;
+  const ref::HwParams p = sim::tb_params();
   const int kLatency = ref::indicator_latency(p);
   std::printf("tb_rpu_indicator: LW %d, AW %d, %d lanes, latency %d\n", kLw, kAw, kLanes, kLatency);
 
   std::vector<Surf> surfs;
-  for (const char* name : {"surf_ellipsoid", "surf_relief", "surf_spiral", "surf_snail",
-                           "surf_rocket", "surf_mix"}) {
-    const scene::CompiledScene sc = scene::compile_scene(
-        scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json"));
+  for (const char* name : sim::kSurfaceScenes) {
+    const scene::CompiledScene sc = sim::compiled_demo_scene(name);
     const ref::ModelScene m = ref::quantize_scene(sc, p);
     for (size_t k = 0; k < m.surfaces.size(); ++k) {
       Surf s{std::string(name) + "[" + std::to_string(k) + "]", sc.surfaces[k], m.surfaces[k]};
       const std::string problem = port_problem(s.desc);
-      if (!problem.empty()) {
-        std::printf("FAILURE: %s: the descriptor does not fit the unit's ports (%s)\n",
-                    s.name.c_str(), problem.c_str());
-        return 1;
-      }
+      if (!problem.empty())
+        return tb.fail("%s: the descriptor does not fit the unit's ports (%s)", s.name.c_str(),
+                       problem.c_str());
       surfs.push_back(std::move(s));
     }
   }
   bool have_type[5] = {};
   for (const Surf& s : surfs) have_type[static_cast<int>(s.desc.type)] = true;
   for (int t = 0; t < 5; ++t)
-    if (!have_type[t]) {
-      std::printf("FAILURE: no %s among the demo scenes' surfaces\n", kTypeName[t]);
-      return 1;
-    }
+    if (!have_type[t]) return tb.fail("no %s among the demo scenes' surfaces", kTypeName[t]);
 
-  const long count = sim::vector_count(40000);
-  std::deque<Item> items;
+  const long count = tb.vectors(40000);
+  std::vector<Item> items;
   const i128 lw_max = fixed::max_signed(kLw), lw_min = fixed::min_signed(kLw);
   const std::uint64_t turn = std::uint64_t{1} << kAw;
 
   // A point with the given branch bits (full_turns + last_turn ≤ LANES).
   const auto add_branch = [&](int k, Source src, const ref::SurfaceDesc& d, const ref::WVec3& l,
                               bool xneg, bool last) {
-    Item it{k, src, d, l, xneg, last, false, false, {}, 0, 0};
+    Item it{k, src, d, l, xneg, last, false, false, {}};
     fixed::Overflow ovf;
     it.inside = ref::indicator_unit(p, d, l, xneg, last, ovf, &it.trace);
     it.ovf = ovf.flag;
@@ -323,7 +150,7 @@ int main(int argc, char** argv) {
       for (i128 y : edge)
         for (i128 z : edge) add(k, kEdge, d, {x, y, z});
     for (int r = 0; r < 64; ++r) {
-      const i128 a = random_magnitude(rng, kLw - 1), b = random_magnitude(rng, kLw - 1);
+      const i128 a = sim::random_magnitude(rng, kLw - 1), b = sim::random_magnitude(rng, kLw - 1);
       add(k, kEdge, d, {0, a, b});                        // the plane x = 0
       add(k, kEdge, d, {0, a, 0});                        // the y axis
       add(k, kEdge, d, {static_cast<i128>(rng() % 3) - 1, a, b});
@@ -345,9 +172,9 @@ int main(int argc, char** argv) {
       for (int sgn : {1, -1})
         for (int off = -3; off <= 3; ++off)
           for (int r = 0; r < 8; ++r)
-            add(k, kEdge, d, {random_magnitude(rng, kLw - 4),
+            add(k, kEdge, d, {sim::random_magnitude(rng, kLw - 4),
                               clamp_lw(sgn * static_cast<i128>(std::llround(yb)) + off),
-                              random_magnitude(rng, kLw - 4)});
+                              sim::random_magnitude(rng, kLw - 4)});
     }
   }
 
@@ -385,11 +212,11 @@ int main(int argc, char** argv) {
       };
       add(k, kSurface, d, {coord(pt.x), coord(pt.y), coord(pt.z)});
     } else if (kind < 88) {  // anywhere
-      add(k, kRange, d, {random_signed(rng, kLw), random_signed(rng, kLw), random_signed(rng, kLw)});
+      add(k, kRange, d, {sim::random_signed(rng, kLw), sim::random_signed(rng, kLw), sim::random_signed(rng, kLw)});
     } else {  // edited descriptor, points of every magnitude
-      const ref::SurfaceDesc e = edit(d, rng);
-      add(k, kEdited, e, {random_magnitude(rng, kLw), random_magnitude(rng, kLw),
-                          random_magnitude(rng, kLw)});
+      const ref::SurfaceDesc e = sim::edit_indicator_fields(d, p, kLanes + 1, rng, true);
+      add(k, kEdited, e, {sim::random_magnitude(rng, kLw), sim::random_magnitude(rng, kLw),
+                          sim::random_magnitude(rng, kLw)});
     }
   }
 
@@ -545,7 +372,7 @@ int main(int argc, char** argv) {
       const double rho0 = (neg ? amag * (kLanes + 1.5) : 0) + uniform(rng, 0, half / 8);
       const double a = neg ? -amag : amag, kt = uniform(rng, -1, 1) * half / (4 * (kLanes + 2));
       const double rt = amag * uniform(rng, 0.15, 0.45);
-      const i128 sx = (i128{1} << (kKf - 1)) + random_bits(rng, kKf - 1);
+      const i128 sx = (i128{1} << (kKf - 1)) + sim::random_bits(rng, kKf - 1);
       const i128 sy = std::clamp<i128>(static_cast<i128>(static_cast<double>(sx) *
                                                          uniform(rng, 0.6, 1.4)),
                                        1, fixed::max_unsigned(kKf + 1));
@@ -613,7 +440,7 @@ int main(int argc, char** argv) {
       const i128 ymax = fixed::max_signed(kLw);
       const i128 ysign = rng() % 2 ? 1 : -1;
       if (out_at(0) || !out_at(ymax)) {
-        add_branch(k, kBoundary, d, {x, ysign * random_magnitude(rng, kLw - 1), z}, xneg, last);
+        add_branch(k, kBoundary, d, {x, ysign * sim::random_magnitude(rng, kLw - 1), z}, xneg, last);
         continue;
       }
       const i128 y = bisect(0, ymax, out_at);
@@ -629,8 +456,8 @@ int main(int argc, char** argv) {
       };
       const ref::WVec3 l{coord(pt.x), coord(pt.y), coord(pt.z)};
       if (rng() % 2) {  // k' = kd + y1 + y2 of every bit pattern
-        d.kd = static_cast<std::int64_t>(random_magnitude(rng, kKf + 2));
-        d.ke2 = static_cast<std::int64_t>(random_magnitude(rng, kKf + 2));
+        d.kd = static_cast<std::int64_t>(sim::random_magnitude(rng, kKf + 2));
+        d.ke2 = static_cast<std::int64_t>(sim::random_magnitude(rng, kKf + 2));
       }
       const auto in_at = [&](i128 r2) {
         ref::SurfaceDesc e = d;
@@ -676,101 +503,33 @@ int main(int argc, char** argv) {
               n_ovf, n_lane_hi, n_rocket_in[0], n_rocket_region[0], n_rocket_in[1],
               n_rocket_region[1], n_rocket_in[2], n_rocket_region[2], n_d2_neg);
   for (int t = 0; t < 5; ++t)
-    if (n_in[t] < count / 200 || n_type[t] - n_in[t] < count / 200) {
-      std::printf("FAILURE: the vectors are too weak: %s has %ld of %ld points inside\n",
-                  kTypeName[t], n_in[t], n_type[t]);
-      return 1;
-    }
+    if (n_in[t] < count / 200 || n_type[t] - n_in[t] < count / 200)
+      return tb.fail("the vectors are too weak: %s has %ld of %ld points inside", kTypeName[t],
+                     n_in[t], n_type[t]);
   if (n_ovf == 0 || n_lane_hi < count / 200 || n_d2_neg == 0 ||
-      *std::min_element(n_rocket_in, n_rocket_in + 3) == 0) {
-    std::printf("FAILURE: the vectors are too weak (overflow, upper turns, rocket regions or "
-                "relief s²m² ≤ 0 missing)\n");
-    return 1;
-  }
+      *std::min_element(n_rocket_in, n_rocket_in + 3) == 0)
+    return tb.fail("the vectors are too weak (overflow, upper turns, rocket regions or relief "
+                   "s²m² ≤ 0 missing)");
 
-  sim::reset(*top, *ctx);
-  std::deque<Item> expected;
-  long matched = 0, cycle = 0;
-  std::uint64_t tag = 0;
-  const std::uint64_t tag_mask = kTagW >= 64 ? ~0ull : (1ull << kTagW) - 1;
-  const long total = static_cast<long>(items.size());
-  const unsigned lane_mask = (1u << kLanes) - 1;
-  while (matched < total) {
-    const bool issue = !items.empty() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      Item it = items.front();
-      items.pop_front();
-      drive_desc(*top, it.desc);
-      sim::put_vec3(top->l_i, it.l.x, it.l.y, it.l.z, kLw);
-      top->x_negative_i = it.x_negative;
-      top->last_turn_i = it.last_turn;
-      it.tag = tag++ & tag_mask;
-      it.issued = cycle;
-      put(top->tag_i, static_cast<i128>(it.tag), kTagW);
-      expected.push_back(it);
-    } else {
-      drive_junk(*top, rng);
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (expected.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no point outstanding\n", cycle);
-        return 1;
-      }
-      const Item it = expected.front();
-      expected.pop_front();
-      const bool inside = top->inside_o, ovf = top->ovf_o;
-      const unsigned turns = static_cast<unsigned>(top->turn_inside_o) & lane_mask;
-      const auto angle = static_cast<std::uint64_t>(sim::get_unsigned(top->angle_o, kAw));
-      const i128 rho = static_cast<i128>(sim::get_unsigned(top->rho_o, kCw));
-      const auto got_tag = static_cast<std::uint64_t>(sim::get_unsigned(top->tag_o, kTagW));
-      const ref::IndicatorTrace& w = it.trace;
-      const bool ok = inside == it.inside && turns == w.turn_inside && angle == w.angle &&
-                      rho == w.rho && ovf == it.ovf && got_tag == it.tag &&
-                      cycle - it.issued == kLatency;
-      if (!ok) {
-        const ref::SurfaceDesc& d = it.desc;
-        std::printf(
-            "FAILURE cycle %ld item %ld: %s (%s), %s point\n"
-            "  inputs   l %s x_negative %d last_turn %d tag %llu\n"
-            "           sx %lld sy %lld sz %lld r2 %s kd %lld ke2 %lld y_angle %s rho0 %lld "
-            "a_turn %lld k_turn %lld full_turns %d a %lld b %lld fin %s cone %s\n"
-            "  expected inside %d turns 0x%x angle %llu rho %s ovf %d latency %d "
-            "(trace: lhs %s rhs %s enabled 0x%x)\n"
-            "  actual   inside %d turns 0x%x angle %llu rho %s ovf %d latency %ld tag %llu\n",
-            cycle, matched, surfs[static_cast<size_t>(it.surf)].name.c_str(),
-            kTypeName[static_cast<int>(d.type)], kSourceName[it.source], str(it.l).c_str(),
-            it.x_negative, it.last_turn, static_cast<unsigned long long>(it.tag),
-            static_cast<long long>(d.sx), static_cast<long long>(d.sy),
-            static_cast<long long>(d.sz), sim::to_string(d.r2).c_str(),
-            static_cast<long long>(d.kd), static_cast<long long>(d.ke2), str(d.y_angle).c_str(),
-            static_cast<long long>(d.rho0), static_cast<long long>(d.a_turn),
-            static_cast<long long>(d.k_turn), d.full_turns, static_cast<long long>(d.rocket_a),
-            static_cast<long long>(d.rocket_b), str(d.fin).c_str(), str(d.cone).c_str(),
-            it.inside, w.turn_inside, static_cast<unsigned long long>(w.angle),
-            sim::to_string(w.rho).c_str(), it.ovf, kLatency, sim::to_string(w.lhs).c_str(),
-            sim::to_string(w.rhs).c_str(), w.turn_enable, inside, turns,
-            static_cast<unsigned long long>(angle), sim::to_string(rho).c_str(), ovf,
-            cycle - it.issued, static_cast<unsigned long long>(got_tag));
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
-  top->valid_i = 0;
-  for (int k = 0; k < kLatency + 4; ++k) {
-    sim::tick(*top, *ctx);
-    if (top->valid_o) {
-      std::printf("FAILURE: valid_o after the last point\n");
-      return 1;
-    }
-  }
-  std::printf("tb_rpu_indicator: matched %ld items (%ld cycles)\n", matched, cycle);
-  return 0;
+  sim::Stream<Vrpu_indicator, Item> s;
+  s.inputs = [&](sim::Inputs& in, Vrpu_indicator& t, const Item& it) {
+    in.vec("l", t.l_i, it.l, kLw)("x_negative", t.x_negative_i, it.x_negative, 1);
+    in("last_turn", t.last_turn_i, it.last_turn, 1);
+    sim::indicator_inputs(in, t, p, it.desc);
+  };
+  s.outputs = [](sim::Outputs& o, const Vrpu_indicator& t, const Item& it) {
+    const ref::IndicatorTrace& w = it.trace;
+    o("inside", t.inside_o, it.inside, 1)("turns", t.turn_inside_o, w.turn_inside, kLanes);
+    o("angle", t.angle_o, static_cast<i128>(w.angle), kAw)("rho", t.rho_o, w.rho, kCw)("ovf", t.ovf_o, it.ovf, 1);
+    o.note("lhs", sim::str(w.lhs)).note("rhs", sim::str(w.rhs)).note("enabled", std::to_string(w.turn_enable));
+  };
+  s.what = [&](const Item& it) {
+    return surfs[static_cast<size_t>(it.surf)].name + " (" + kTypeName[static_cast<int>(it.desc.type)] +
+           "), " + kSourceName[it.source] + " point";
+  };
+  s.latency = kLatency;
+  s.tag_w = TAG_W;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass();
 }

@@ -6,11 +6,10 @@
 // inside the bounding sphere (camera_rays, inside_rays of tb_surface_common.h), also with the
 // indicator fields redrawn within the indicator's port contract (overflowing lanes); pieces the
 // setup finds empty go in with run_i = 0 and random lA', lB' − lA' (nothing may be flagged); and
-// random pieces anywhere in the LW range. Random valid gaps, junk between items, ready_o
-// honoured. RPU_VECTORS scales the counts; RPU_SEED sets the seed.
+// random pieces anywhere in the LW range. RPU_VECTORS scales the counts.
 #include <algorithm>
 #include <deque>
-#include <memory>
+#include <vector>
 
 #include "Vrpu_surface_ip.h"
 #include "model/surface/rpu_surface_ip.h"
@@ -18,24 +17,6 @@
 #include "model/surface/rpu_surface_setup.h"
 #include "tb_surface_common.h"
 
-#ifndef RPU_SOURCE_DIR
-#error "RPU_SOURCE_DIR must be defined (see sim/tests/surface/rpu_surface_ip.cmake)"
-#endif
-#ifndef IP_N
-#define IP_N 16
-#endif
-#ifndef IP_N1
-#define IP_N1 2
-#endif
-#ifndef UNROLLED
-#define UNROLLED 0
-#endif
-#ifndef SURF_W
-#define SURF_W 24
-#endif
-#ifndef ANGLE_W
-#define ANGLE_W 20
-#endif
 #ifndef TURNS
 #define TURNS 8
 #endif
@@ -49,20 +30,10 @@ using namespace rpu;
 using sim::i128;
 using sim::u128;
 
-ref::HwParams make_params() {
-  ref::HwParams p;
-  p.n = IP_N;
-  p.n1 = IP_N1;
-  p.unrolled = UNROLLED != 0;
-  p.surf_w = SURF_W;
-  p.angle_w = ANGLE_W;
-  p.validate();
-  return p;
-}
-const ref::HwParams kP = make_params();
+const ref::HwParams kP = sim::tb_params();
 const int LW = kP.surf_w;
 constexpr int kCtxW = CTX_W, kTurns = TURNS;
-const char* const kTypeName[] = {"ellipsoid", "relief", "spiral", "snail", "rocket"};
+const char* const* const kTypeName = sim::kSurfaceTypeName;
 enum Kind { kScene, kEdited, kRandomPiece, kKinds };
 const char* const kKindName[] = {"scene piece", "edited descriptor", "random piece"};
 
@@ -76,61 +47,24 @@ struct Item {
   bool hit = false, ovf = false;
   std::uint64_t tau = 0;
   std::uint32_t ctx = 0;
-  long issued = 0;
 };
-
-void drive_item(Vrpu_surface_ip& top, const Item& it) {
-  top.run_i = it.su.valid;
-  sim::PortBits la, lab;
-  la.add(it.su.lA.x, LW);
-  la.add(it.su.lA.y, LW);
-  la.add(it.su.lA.z, LW);
-  lab.add(it.su.lAB.x, LW + 1);
-  lab.add(it.su.lAB.y, LW + 1);
-  lab.add(it.su.lAB.z, LW + 1);
-  la.to(top.la_i);
-  lab.to(top.lab_i);
-  top.x_negative_i = it.su.x_negative;
-  top.last_turn_i = it.su.last_turn;
-  sim::drive_indicator_fields(top, kP, *it.d);
-  sim::put(top.ctx_i, it.ctx, kCtxW);
-}
-
-void drive_junk(Vrpu_surface_ip& top, std::mt19937_64& rng) {
-  const auto r = [&](int w) { return sim::random_bits(rng, w); };
-  top.run_i = static_cast<unsigned>(r(1));
-  sim::PortBits la, lab;
-  la.add(r(3 * LW), 3 * LW);
-  lab.add(r(3 * (LW + 1)), 3 * (LW + 1));
-  la.to(top.la_i);
-  lab.to(top.lab_i);
-  top.x_negative_i = static_cast<unsigned>(r(1));
-  top.last_turn_i = static_cast<unsigned>(r(1));
-  sim::drive_indicator_junk(top, kP, rng);
-  sim::put(top.ctx_i, r(kCtxW), kCtxW);
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_surface_ip");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_surface_ip>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_surface_ip");
-  std::mt19937_64 rng(seed);
+  sim::Testbench<Vrpu_surface_ip> tb("tb_rpu_surface_ip", argc, argv);
+  auto& rng = tb.rng;
   const long latency = ref::surface_ip_latency(kP);
-  const long scale = std::max<long>(1, sim::vector_count(1));
+  const long scale = std::max<long>(1, tb.vectors(1));
   std::printf("tb_rpu_surface_ip: LW %d, AW %d, %d turn lanes, n %d, n1 %d, %s, latency %ld\n", LW,
               kP.angle_w, kTurns, kP.n, kP.n1, kP.unrolled ? "unrolled" : "iterative", latency);
 
   std::deque<scene::CompiledScene> scenes;
-  const std::vector<sim::SurfCase> cases = sim::load_surface_cases(RPU_SOURCE_DIR, kP, scenes);
+  const std::vector<sim::SurfCase> cases = sim::load_surface_cases(kP, scenes);
   for (const sim::SurfCase& S : cases)
-    if (S.d.full_turns >= kTurns) {
-      std::printf("FAILURE: %s: full_turns %d does not fit %d turn lanes\n", S.name.c_str(),
-                  S.d.full_turns, kTurns);
-      return 1;
-    }
+    if (S.d.full_turns >= kTurns)
+      return tb.fail("%s: full_turns %d does not fit %d turn lanes", S.name.c_str(), S.d.full_turns,
+                     kTurns);
 
   // ---- the items ----
   std::vector<Item> items;
@@ -220,85 +154,33 @@ int main(int argc, char** argv) {
   for (int t = 0; t < 5; ++t) std::printf(" %s %ld/%ld,", kTypeName[t], n_type_hit[t], n_type_miss[t]);
   std::printf("\n");
   for (int t = 0; t < 5; ++t)
-    if (n_type_hit[t] < 10 || n_type_miss[t] < 10) {
-      std::printf("FAILURE: the vectors are too weak: %s has %ld hits and %ld misses\n",
-                  kTypeName[t], n_type_hit[t], n_type_miss[t]);
-      return 1;
-    }
-  if (n_ovf < 10 || n_run == static_cast<long>(items.size())) {
-    std::printf("FAILURE: the vectors are too weak (under 10 overflows, or no empty piece)\n");
-    return 1;
-  }
+    if (n_type_hit[t] < 10 || n_type_miss[t] < 10)
+      return tb.fail("the vectors are too weak: %s has %ld hits and %ld misses", kTypeName[t],
+                     n_type_hit[t], n_type_miss[t]);
+  if (n_ovf < 10 || n_run == static_cast<long>(items.size()))
+    return tb.fail("the vectors are too weak (under 10 overflows, or no empty piece)");
 
-  // ---- run ----
-  sim::reset(*top, *ctx);
-  std::deque<Item> expected;
-  size_t next = 0;
-  long cycle = 0, matched = 0;
-  const long total = static_cast<long>(items.size());
-  while (matched < total) {
-    const bool offer = next < items.size() && rng() % 100 < 85;
-    top->valid_i = offer;
-    if (offer) drive_item(*top, items[next]);
-    else drive_junk(*top, rng);
-    const bool taken = offer && top->ready_o;  // ready_o: registers only, settled
-    sim::tick(*top, *ctx);
-    if (taken) {
-      Item it = items[next++];
-      it.issued = cycle;
-      expected.push_back(it);
-    }
-    ++cycle;
-    if (top->valid_o) {
-      if (expected.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no item outstanding\n", cycle);
-        return 1;
-      }
-      const Item it = expected.front();
-      expected.pop_front();
-      const bool hit = top->hit_o, ovf = top->ovf_o;
-      const auto tau = static_cast<std::uint64_t>(sim::get_unsigned(top->tau_o, kP.n));
-      const auto got_ctx = static_cast<std::uint32_t>(sim::get_unsigned(top->ctx_o, kCtxW));
-      if (hit != it.hit || ovf != it.ovf || tau != (it.hit ? it.tau : 0) || got_ctx != it.ctx ||
-          cycle - it.issued != latency) {
-        const ref::SurfaceDesc& d = *it.d;
-        std::printf(
-            "FAILURE cycle %ld item %ld: %s (%s), %s, %s ray, piece %d\n"
-            "  inputs   run %d lA' %s lB'-lA' %s x_negative %d last_turn %d ctx %u\n"
-            "           sx %lld sy %lld sz %lld r2 %s kd %lld ke2 %lld rho0 %lld a_turn %lld "
-            "k_turn %lld full_turns %d a %lld b %lld fin %lld·2^-%d cone %lld·2^-%d\n"
-            "  expected hit %d tau %llu ovf %d latency %ld\n"
-            "  actual   hit %d tau %llu ovf %d latency %ld ctx %u\n",
-            cycle, matched, cases[static_cast<size_t>(it.surf)].name.c_str(),
-            kTypeName[static_cast<int>(d.type)], kKindName[it.kind],
-            it.kind == kRandomPiece ? "no" : sim::kRaySourceName[it.ray.src], it.piece,
-            it.su.valid, sim::str(it.su.lA).c_str(), sim::str(it.su.lAB).c_str(),
-            it.su.x_negative, it.su.last_turn, it.ctx, static_cast<long long>(d.sx),
-            static_cast<long long>(d.sy), static_cast<long long>(d.sz),
-            sim::to_string(d.r2).c_str(), static_cast<long long>(d.kd),
-            static_cast<long long>(d.ke2), static_cast<long long>(d.rho0),
-            static_cast<long long>(d.a_turn), static_cast<long long>(d.k_turn), d.full_turns,
-            static_cast<long long>(d.rocket_a), static_cast<long long>(d.rocket_b),
-            static_cast<long long>(d.fin.m), d.fin.s, static_cast<long long>(d.cone.m), d.cone.s,
-            it.hit, static_cast<unsigned long long>(it.hit ? it.tau : 0), it.ovf, latency, hit,
-            static_cast<unsigned long long>(tau), ovf, cycle - it.issued, got_ctx);
-        return 1;
-      }
-      ++matched;
-    }
-    if (cycle > 20 * total * (kP.K() + 2) + 4 * latency) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
-  top->valid_i = 0;
-  for (long k = 0; k < latency + 8; ++k) {
-    sim::tick(*top, *ctx);
-    if (top->valid_o) {
-      std::printf("FAILURE: valid_o after the last item\n");
-      return 1;
-    }
-  }
-  std::printf("tb_rpu_surface_ip: matched %ld items (%ld cycles)\n", matched, cycle);
-  return 0;
+  sim::Stream<Vrpu_surface_ip, Item> s;
+  s.inputs = [](sim::Inputs& in, Vrpu_surface_ip& t, const Item& it) {
+    in("run", t.run_i, it.su.valid, 1).fields("lA'", t.la_i, std::array{it.su.lA.x, it.su.lA.y, it.su.lA.z}, LW);
+    in.fields("lB' - lA'", t.lab_i, std::array{it.su.lAB.x, it.su.lAB.y, it.su.lAB.z}, LW + 1);
+    in("x_negative", t.x_negative_i, it.su.x_negative, 1)("last_turn", t.last_turn_i, it.su.last_turn, 1);
+    sim::indicator_inputs(in, t, kP, *it.d);
+    in("ctx", t.ctx_i, it.ctx, kCtxW);
+  };
+  s.outputs = [](sim::Outputs& o, const Vrpu_surface_ip& t, const Item& it) {
+    o("hit", t.hit_o, it.hit, 1)("tau", t.tau_o, it.hit ? static_cast<i128>(it.tau) : 0, kP.n);
+    o("ovf", t.ovf_o, it.ovf, 1)("ctx", t.ctx_o, it.ctx, kCtxW);
+  };
+  s.what = [&](const Item& it) {
+    return cases[static_cast<size_t>(it.surf)].name + " (" + kTypeName[static_cast<int>(it.d->type)] +
+           "), " + kKindName[it.kind] + ", " +
+           (it.kind == kRandomPiece ? "no" : sim::kRaySourceName[it.ray.src]) + " ray, piece " +
+           std::to_string(it.piece);
+  };
+  s.latency = latency;
+  s.timeout = 20 * static_cast<long>(items.size()) * (kP.K() + 2) + 4 * latency;
+  tb.reset();
+  if (!tb.run(items, s)) return 1;
+  return tb.pass();
 }

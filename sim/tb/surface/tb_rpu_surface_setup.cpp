@@ -13,15 +13,13 @@
 //     turn, none), their end_cos / end_sin quantised as the compiler does;
 //   - every descriptor with a smaller block shift to_local_s (M up to 2^8 times too large), so
 //     that la and lb saturate (the overflow flag) for points far enough from the origin;
-// each ray with every piece index 0..2 (and some with 3, never valid). Random valid gaps, junk on
-// the inputs between items; latency and tag checked. pred1, pieces, piece_valid and the overflow
-// bit are compared always; s_lo, s_hi, A', B' − A', lA', lB' − lA', x_negative and last_turn
+// each ray with every piece index 0..2 (and some with 3, never valid); latency and tag checked.
+// pred1, pieces, piece_valid and the overflow bit are compared always; s_lo, s_hi, A', B' − A', lA', lB' − lA', x_negative and last_turn
 // when the piece is valid (the twin leaves them zero otherwise; the RTL's are don't-care).
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
-#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -29,35 +27,7 @@
 #include "Vrpu_surface_setup.h"
 #include "model/surface/rpu_surface_setup.h"
 #include "model/surface/rpu_surface_setup_latency.h"
-#include "model/units.h"
-#include "scene/compiled_scene.h"
-#include "scene/scene_json.h"
-#include "tb_common.h"
-
-#ifndef COORD_W
-#define COORD_W 24
-#endif
-#ifndef DIR_FRAC
-#define DIR_FRAC 24
-#endif
-#ifndef T_FRAC
-#define T_FRAC 24
-#endif
-#ifndef INV_W
-#define INV_W 18
-#endif
-#ifndef SQRT_W
-#define SQRT_W 0
-#endif
-#ifndef SURF_W
-#define SURF_W 24
-#endif
-#ifndef ANGLE_W
-#define ANGLE_W 20
-#endif
-#ifndef TAG_W
-#define TAG_W 8
-#endif
+#include "tb_surface_common.h"
 
 namespace {
 
@@ -69,20 +39,7 @@ using sim::i128;
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-ref::HwParams make_params() {
-  ref::HwParams p;
-  p.coord_w = COORD_W;
-  p.dir_frac = DIR_FRAC;
-  p.t_frac = T_FRAC;
-  p.inv_w = INV_W;
-  p.sqrt_w = SQRT_W;
-  p.surf_w = SURF_W;
-  p.angle_w = ANGLE_W;
-  p.validate();
-  return p;
-}
-
-const ref::HwParams kP = make_params();
+const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
 const int R2W = 2 * CW + 1, LW = kP.surf_w, MW = kP.surf_mant_w(), KF = kP.surf_const_frac();
 const int KW = KF + 2, SF = kP.surf_cut_frac(), SW = SF + 1, AW = kP.angle_w;
@@ -100,6 +57,11 @@ struct Surf {
   ref::SurfaceDesc d;
 };
 
+struct Expected {
+  ref::SurfaceSetupOut o;
+  bool ovf = false;
+};
+
 struct Item {
   Source src;
   int surf = 0;     // index into the surface list
@@ -107,11 +69,7 @@ struct Item {
   int piece = 0;
   ref::IVec3 eye, vhat;
   const ref::SurfaceDesc* s = nullptr;
-};
-
-struct Expected {
-  ref::SurfaceSetupOut o;
-  bool ovf = false;
+  Expected want;
 };
 Expected expected(const Item& it) {
   Expected e;
@@ -120,65 +78,6 @@ Expected expected(const Item& it) {
   e.ovf = ovf.flag;
   return e;
 }
-
-// A little-endian bit buffer: fields appended LSB first, then copied into a port of any width.
-struct Bits {
-  std::array<std::uint32_t, 32> w{};
-  int n = 0;
-  void add(i128 v, int width) {
-    const u128 u = static_cast<u128>(v);
-    for (int b = 0; b < width; ++b, ++n) {
-      const bool bit = b < 128 ? ((u >> b) & 1) != 0 : v < 0;
-      if (bit) w[static_cast<size_t>(n / 32)] |= 1u << (n % 32);
-    }
-  }
-};
-template <std::size_t N>
-void put_bits(VlWide<N>& port, const Bits& b) {
-  for (std::size_t k = 0; k < N; ++k) port[k] = b.w[k];
-}
-template <class T>
-void put_bits(T& port, const Bits& b) {
-  port = static_cast<T>(b.w[0] | (static_cast<std::uint64_t>(b.w[1]) << 32));
-}
-// A `w`-bit field (the value's low bits) into a port of exactly that width: Verilator expects
-// the bits above the port's width to be zero.
-template <class P>
-void put_field(P& port, i128 v, int w) {
-  Bits b;
-  b.add(v, w);
-  put_bits(port, b);
-}
-template <class P>
-void put_vec(P& port, i128 x, i128 y, i128 z, int w) {
-  Bits b;
-  b.add(x, w);
-  b.add(y, w);
-  b.add(z, w);
-  put_bits(port, b);
-}
-template <class P>
-ref::WVec3 get_vec(const P& port, int w) {
-  const u128 u = sim::get_unsigned(port, 3 * w);
-  const auto comp = [&](int k) {
-    const u128 c = (u >> (k * w)) & fixed::max_unsigned(w), sign = u128{1} << (w - 1);
-    return static_cast<i128>((c ^ sign) - sign);
-  };
-  return {comp(0), comp(1), comp(2)};
-}
-
-std::string str(i128 v) { return sim::to_string(v); }
-std::string str(const ref::WVec3& v) {
-  std::string s("(");  // appended piecewise (GCC 12 warns falsely on "(" + std::string)
-  s += str(v.x);
-  s += ", ";
-  s += str(v.y);
-  s += ", ";
-  s += str(v.z);
-  s += ")";
-  return s;
-}
-std::string str(const ref::IVec3& v) { return str(ref::WVec3{v.x, v.y, v.z}); }
 
 bool fits3(const ref::IVec3& v, int w) {
   return fixed::fits_signed(v.x, w) && fixed::fits_signed(v.y, w) && fixed::fits_signed(v.z, w);
@@ -197,24 +96,10 @@ bool fits_ports(const Item& it) {
   return ok;
 }
 
-// A unit direction quantised as the ray generator's v̂ (Q(2.FV)).
-ref::IVec3 quantise_dir(const Vec3& d) {
-  const Vec3 u = normalize(d);
-  return {std::llround(std::ldexp(u.x, FV)), std::llround(std::ldexp(u.y, FV)),
-          std::llround(std::ldexp(u.z, FV))};
-}
-Vec3 to_vec(const ref::IVec3& v) {
-  return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
-}
-
-// A random unit vector.
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g(0.0, 1.0);
-  Vec3 u;
-  do u = {g(rng), g(rng), g(rng)};
-  while (length(u) < 1e-6);
-  return normalize(u);
-}
+using sim::random_unit;
+using sim::round3;
+using sim::to_vec;
+ref::IVec3 quantise_dir(const Vec3& d) { return sim::quantise_dir(kP, d); }
 
 // The end plane's cos, sin as the compiler quantises them (surface_descriptors.cpp).
 ref::SurfaceDesc with_end_angle(ref::SurfaceDesc d, std::uint64_t end) {
@@ -228,15 +113,10 @@ ref::SurfaceDesc with_end_angle(ref::SurfaceDesc d, std::uint64_t end) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto ctx = sim::make_context("tb_rpu_surface_setup");
-  ctx->commandArgs(argc, argv);
-  auto top = std::make_unique<Vrpu_surface_setup>(ctx.get());
-  const std::uint64_t seed = sim::test_seed("tb_rpu_surface_setup");
-  std::mt19937_64 rng(seed);
-  const long latency = ref::surface_setup_latency(kP);
-  const long scale = std::max<long>(1, sim::vector_count(1));  // RPU_VECTORS multiplies the counts
+  sim::Testbench<Vrpu_surface_setup> tb("tb_rpu_surface_setup", argc, argv);
+  auto& rng = tb.rng;
+  const long scale = std::max<long>(1, tb.vectors(1));  // RPU_VECTORS multiplies the counts
 
-  // ---- the scenes' surfaces (their descriptors and variants live in a deque: stable) ----
   std::deque<scene::CompiledScene> scenes;
   std::deque<ref::SurfaceDesc> variants;
   std::vector<Surf> surfs;
@@ -245,10 +125,8 @@ int main(int argc, char** argv) {
   // x, y, z, so every entry of the local-frame matrix is nonzero (the scenes' own placements
   // leave some at zero, e.g. M[1][0] after a 90° turn about x, and their products untested).
   for (int turned = 0; turned < 2; ++turned) {
-    for (const char* name : {"surf_ellipsoid", "surf_relief", "surf_spiral", "surf_snail",
-                             "surf_rocket", "surf_mix"}) {
-      scene::Scene sc =
-          scene::load_scene(std::string(RPU_SOURCE_DIR) + "/scenes/" + name + ".json");
+    for (const char* name : sim::kSurfaceScenes) {
+      scene::Scene sc = sim::demo_scene(name);
       if (turned)
         for (scene::Surface& s : sc.surfaces)
           s.rotation_deg = {s.rotation_deg.x + 23.0, s.rotation_deg.y + 37.0,
@@ -317,9 +195,6 @@ int main(int argc, char** argv) {
     const double lim = std::ldexp(1.0, CW - 1) - 2.0;
     const auto in_range = [&](const Vec3& v) {
       return std::fabs(v.x) < lim && std::fabs(v.y) < lim && std::fabs(v.z) < lim;
-    };
-    const auto round3 = [](const Vec3& v) {
-      return ref::IVec3{std::llround(v.x), std::llround(v.y), std::llround(v.z)};
     };
     for (int n = 0; n < 1200 * scale; ++n) {
       const bool inside = n % 4 == 3;
@@ -469,14 +344,12 @@ int main(int argc, char** argv) {
   long per_src_ovf[kSources] = {};
   long pieces_hist[4] = {}, xneg[2] = {}, last[2] = {}, slab_full = 0, slab_dy0 = 0;
   long cut_at_end = 0, cut_at_start = 0, slab_lo0 = 0, slab_hi1 = 0, slab_inner = 0;
-  for (const Item& it : items) {
-    if (!fits_ports(it)) {
-      std::printf("FAILURE: a %s vector does not fit the ports (surface %s, eye %s, vhat %s)\n",
-                  kSourceName[it.src], surfs[static_cast<size_t>(it.surf)].name.c_str(),
-                  str(it.eye).c_str(), str(it.vhat).c_str());
-      return 1;
-    }
-    const Expected e = expected(it);
+  for (Item& it : items) {
+    if (!fits_ports(it))
+      return tb.fail("a %s vector does not fit the ports (surface %s, eye %s, vhat %s)",
+                     kSourceName[it.src], surfs[static_cast<size_t>(it.surf)].name.c_str(),
+                     sim::str(it.eye).c_str(), sim::str(it.vhat).c_str());
+    const Expected e = it.want = expected(it);
     ++per_src[it.src];
     per_src_pred[it.src] += e.o.sphere.pred1;
     per_src_valid[it.src] += e.o.valid;
@@ -509,147 +382,39 @@ int main(int argc, char** argv) {
               last[0], last[1], cut_at_start, cut_at_end, slab_full, slab_lo0, slab_hi1,
               slab_inner, slab_dy0);
 
-  // ---- drive and check ----
   std::shuffle(items.begin(), items.end(), rng);  // mix the sources and surfaces
-  sim::reset(*top, *ctx);
-  struct Pending {
-    size_t index;
-    long cycle;
-    std::uint32_t tag;
-    Expected want;
+
+  sim::Stream<Vrpu_surface_setup, Item> st;
+  st.inputs = [](sim::Inputs& in, Vrpu_surface_setup& t, const Item& it) {
+    const ref::SurfaceDesc& s = *it.s;
+    in.vec("eye", t.eye_i, it.eye, CW).vec("vhat", t.vhat_i, it.vhat, DirW).vec("c0", t.c0_i, s.bound.c0, CW);
+    in("R2", t.r2_i, s.bound.R2, R2W).vec("origin", t.origin_i, s.origin, CW);
+    in.fields("to_local", t.to_local_i, s.to_local, MW)("to_local_s", t.to_local_s_i, s.to_local_s, kShW);
+    in("type", t.type_i, static_cast<int>(s.type), 3)("y_min", t.y_min_i, s.y_min, LW)("y_max", t.y_max_i, s.y_max, LW);
+    in("end_angle", t.end_angle_i, static_cast<i128>(s.end_angle), AW)("end_cos", t.end_cos_i, s.end_cos, KW);
+    in("end_sin", t.end_sin_i, s.end_sin, KW)("piece", t.piece_i, it.piece, 2);
   };
-  std::deque<Pending> pending;
-  const u128 tag_mask = fixed::max_unsigned(TAG_W);
-  long matched = 0, cycle = 0, valid_pieces = 0;
-  size_t next = 0;
-  const long total = static_cast<long>(items.size());
-  const auto junk = [&] { return static_cast<i128>((static_cast<u128>(rng()) << 64) | rng()); };
-  while (matched < total) {
-    const bool issue = next < items.size() && (rng() % 100) < 85;
-    top->valid_i = issue;
-    if (issue) {
-      const Item& it = items[next];
-      const ref::SurfaceDesc& s = *it.s;
-      put_vec(top->eye_i, it.eye.x, it.eye.y, it.eye.z, CW);
-      put_vec(top->vhat_i, it.vhat.x, it.vhat.y, it.vhat.z, DirW);
-      put_vec(top->c0_i, s.bound.c0.x, s.bound.c0.y, s.bound.c0.z, CW);
-      put_field(top->r2_i, s.bound.R2, R2W);
-      put_vec(top->origin_i, s.origin.x, s.origin.y, s.origin.z, CW);
-      Bits m;
-      for (i64 v : s.to_local) m.add(v, MW);
-      put_bits(top->to_local_i, m);
-      top->to_local_s_i = static_cast<CData>(s.to_local_s);
-      top->type_i = static_cast<CData>(s.type);
-      put_field(top->y_min_i, s.y_min, LW);
-      put_field(top->y_max_i, s.y_max, LW);
-      put_field(top->end_angle_i, static_cast<i128>(s.end_angle), AW);
-      put_field(top->end_cos_i, s.end_cos, KW);
-      put_field(top->end_sin_i, s.end_sin, KW);
-      top->piece_i = static_cast<CData>(it.piece);
-      const std::uint32_t tag = static_cast<std::uint32_t>(next & tag_mask);
-      put_field(top->tag_i, tag, TAG_W);
-      pending.push_back({next, cycle, tag, expected(it)});
-      ++next;
-    } else {  // junk on the data inputs: nothing may depend on them
-      put_vec(top->eye_i, junk(), junk(), junk(), CW);
-      put_vec(top->vhat_i, junk(), junk(), junk(), DirW);
-      put_vec(top->c0_i, junk(), junk(), junk(), CW);
-      put_field(top->r2_i, junk() & static_cast<i128>(fixed::max_unsigned(R2W)), R2W);
-      put_vec(top->origin_i, junk(), junk(), junk(), CW);
-      Bits m;
-      for (int k = 0; k < 9; ++k) m.add(junk(), MW);
-      put_bits(top->to_local_i, m);
-      top->to_local_s_i = static_cast<CData>(rng() & 0x7F);
-      top->type_i = static_cast<CData>(rng() & 7);
-      put_field(top->y_min_i, junk(), LW);
-      put_field(top->y_max_i, junk(), LW);
-      put_field(top->end_angle_i, junk(), AW);
-      put_field(top->end_cos_i, junk(), KW);
-      put_field(top->end_sin_i, junk(), KW);
-      top->piece_i = static_cast<CData>(rng() & 3);
-      put_field(top->tag_i, junk() & static_cast<i128>(tag_mask), TAG_W);
-    }
-    sim::tick(*top, *ctx);
-    ++cycle;
-    if (top->valid_o) {
-      if (pending.empty()) {
-        std::printf("FAILURE cycle %ld: valid_o with no item outstanding\n", cycle);
-        return 1;
-      }
-      const Pending pd = pending.front();
-      pending.pop_front();
-      const Item& it = items[pd.index];
-      const ref::SurfaceSetupOut& w = pd.want.o;
-      const bool want_ovf = pd.want.ovf;
-      ref::SurfaceSetupOut got;
-      got.sphere.pred1 = top->pred1_o;
-      got.valid = top->piece_valid_o;
-      got.pieces = top->pieces_o;
-      got.s_lo = static_cast<i128>(sim::get_unsigned(top->s_lo_o, SW));
-      got.s_hi = static_cast<i128>(sim::get_unsigned(top->s_hi_o, SW));
-      got.A = get_vec(top->a_o, CW);
-      got.AB = get_vec(top->ab_o, DiffW);
-      got.lA = get_vec(top->la_o, LW);
-      got.lAB = get_vec(top->lab_o, LW + 1);
-      got.x_negative = top->x_negative_o;
-      got.last_turn = top->last_turn_o;
-      const bool got_ovf = top->ovf_o;
-      const std::uint32_t got_tag = static_cast<std::uint32_t>(sim::get_unsigned(top->tag_o, TAG_W));
-      const char* field = nullptr;
-      if (cycle - pd.cycle != latency) field = "latency";
-      else if (got_tag != pd.tag) field = "tag";
-      else if (got.sphere.pred1 != w.sphere.pred1) field = "pred1";
-      else if (got.pieces != w.pieces) field = "pieces";
-      else if (got.valid != w.valid) field = "piece_valid";
-      else if (got_ovf != want_ovf) field = "overflow";
-      else if (w.valid && got.s_lo != w.s_lo) field = "s_lo";
-      else if (w.valid && got.s_hi != w.s_hi) field = "s_hi";
-      else if (w.valid && !(got.A == w.A)) field = "A'";
-      else if (w.valid && !(got.AB == w.AB)) field = "B' - A'";
-      else if (w.valid && !(got.lA == w.lA)) field = "lA'";
-      else if (w.valid && !(got.lAB == w.lAB)) field = "lB' - lA'";
-      else if (w.valid && got.x_negative != w.x_negative) field = "x_negative";
-      else if (w.valid && got.last_turn != w.last_turn) field = "last_turn";
-      if (field) {
-        const ref::SurfaceDesc& s = *it.s;
-        std::printf("FAILURE cycle %ld item %zu (%s, surface %s, %d/%d, piece %d): %s differs "
-                    "(issued at cycle %ld, latency %ld expected %ld; tag %u expected %u)\n",
-                    cycle, pd.index, kSourceName[it.src],
-                    surfs[static_cast<size_t>(it.surf)].name.c_str(), it.i, it.j, it.piece, field,
-                    pd.cycle, cycle - pd.cycle, latency, got_tag, pd.tag);
-        std::printf("  inputs:   eye %s vhat %s c0 %s R2 %s origin %s to_local_s %d type %d "
-                    "y_min %lld y_max %lld end_angle %llu end_cos %lld end_sin %lld\n",
-                    str(it.eye).c_str(), str(it.vhat).c_str(), str(s.bound.c0).c_str(),
-                    str(s.bound.R2).c_str(), str(s.origin).c_str(), s.to_local_s,
-                    static_cast<int>(s.type), static_cast<long long>(s.y_min),
-                    static_cast<long long>(s.y_max), static_cast<unsigned long long>(s.end_angle),
-                    static_cast<long long>(s.end_cos), static_cast<long long>(s.end_sin));
-        std::printf("  to_local:");
-        for (i64 v : s.to_local) std::printf(" %lld", static_cast<long long>(v));
-        std::printf("\n  twin's intermediates: A %s B %s la %s lb %s\n", str(w.sphere.A).c_str(),
-                    str(w.sphere.B).c_str(), str(w.la).c_str(), str(w.lb).c_str());
-        for (int k = 0; k < 2; ++k) {
-          const ref::SurfaceSetupOut& v = k == 0 ? w : got;
-          std::printf("  %s pred1 %d pieces %d valid %d overflow %d s_lo %s s_hi %s A' %s "
-                      "B'-A' %s lA' %s lB'-lA' %s x_negative %d last_turn %d\n",
-                      k == 0 ? "expected:" : "actual:  ", v.sphere.pred1, v.pieces, v.valid,
-                      k == 0 ? want_ovf : got_ovf, str(v.s_lo).c_str(), str(v.s_hi).c_str(),
-                      str(v.A).c_str(), str(v.AB).c_str(), str(v.lA).c_str(), str(v.lAB).c_str(),
-                      v.x_negative, v.last_turn);
-        }
-        return 1;
-      }
-      ++matched;
-      valid_pieces += w.valid;
-    }
-    if (cycle > 4 * total + 1000) {
-      std::printf("FAILURE: timeout after %ld cycles, %ld of %ld matched\n", cycle, matched, total);
-      return 1;
-    }
-  }
-  top->final();
-  std::printf("rpu_surface_setup CoordW=%d DirFrac=%d SurfW=%d AngleW=%d: latency %ld, matched %ld "
-              "items (%ld valid pieces) in %ld cycles\n",
-              CW, FV, LW, AW, latency, matched, valid_pieces, cycle);
-  return 0;
+  st.outputs = [](sim::Outputs& o, const Vrpu_surface_setup& t, const Item& it) {
+    const ref::SurfaceSetupOut& w = it.want.o;
+    o("pred1", t.pred1_o, w.sphere.pred1, 1)("pieces", t.pieces_o, w.pieces, 2);
+    o("piece_valid", t.piece_valid_o, w.valid, 1)("overflow", t.ovf_o, it.want.ovf, 1);
+    o("s_lo", t.s_lo_o, w.s_lo, SW, w.valid)("s_hi", t.s_hi_o, w.s_hi, SW, w.valid);
+    o.vec("A'", t.a_o, w.A, CW, w.valid).vec("B' - A'", t.ab_o, w.AB, DiffW, w.valid);
+    o.vec("lA'", t.la_o, w.lA, LW, w.valid).vec("lB' - lA'", t.lab_o, w.lAB, LW + 1, w.valid);
+    o("x_negative", t.x_negative_o, w.x_negative, 1, w.valid)("last_turn", t.last_turn_o, w.last_turn, 1, w.valid);
+    o.note("A", sim::str(w.sphere.A)).note("B", sim::str(w.sphere.B)).note("la", sim::str(w.la));
+    o.note("lb", sim::str(w.lb));
+  };
+  st.what = [&](const Item& it) {
+    return std::string(kSourceName[it.src]) + ", surface " + surfs[static_cast<size_t>(it.surf)].name +
+           ", " + std::to_string(it.i) + "/" + std::to_string(it.j) + ", piece " + std::to_string(it.piece);
+  };
+  st.latency = ref::surface_setup_latency(kP);
+  st.tag_w = TAG_W;
+  tb.reset();
+  if (!tb.run(items, st)) return 1;
+  long valid_pieces = 0;
+  for (const Item& it : items) valid_pieces += it.want.o.valid;
+  return tb.pass("CoordW=%d DirFrac=%d SurfW=%d AngleW=%d, latency %ld, %ld valid pieces", CW, FV,
+                 LW, AW, st.latency, valid_pieces);
 }

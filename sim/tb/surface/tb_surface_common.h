@@ -1,7 +1,7 @@
-// Shared by tb_rpu_surface_ip and tb_rpu_surface_top: the demo scenes' surfaces quantised at the
-// build's parameters, the rays both benches drive (camera pixels, image-border pixels, grazing
-// rays, rays in the range planes, eyes inside the bounding sphere), and the indicator fields of
-// a SurfaceDesc on the ports both modules share with rpu_indicator.
+// Shared by the surface testbenches: the demo scenes' surfaces quantised at the build's
+// parameters, the rays the IP and top benches drive (camera pixels, image-border pixels, grazing
+// rays, rays in the range planes, eyes inside the bounding sphere), and the indicator fields of a
+// SurfaceDesc, redrawn or on the ports rpu_surface_ip and rpu_surface_top share with rpu_indicator.
 #pragma once
 
 #include <array>
@@ -12,13 +12,18 @@
 #include <string>
 #include <vector>
 
+#include "model/surface/rpu_surface_setup.h"
 #include "model/units.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"
 #include "scene/surface_geometry.h"
-#include "tb_common.h"
+#include "tb_base.h"
 
 namespace rpu::sim {
+
+inline const char* const kSurfaceScenes[] = {"surf_ellipsoid", "surf_relief", "surf_spiral",
+                                             "surf_snail",     "surf_rocket", "surf_mix"};
+inline const char* const kSurfaceTypeName[] = {"ellipsoid", "relief", "spiral", "snail", "rocket"};
 
 // One surface of a demo scene, with its scene's camera.
 struct SurfCase {
@@ -30,15 +35,13 @@ struct SurfCase {
   ref::CameraDesc cam;
 };
 
-// Every surface of scenes/surf_{ellipsoid,relief,spiral,snail,rocket,mix}.json at `p`; the
+// The demo scenes with surfaces; every surface of them at `p` (load_surface_cases); the
 // compiled scenes live in `keep` (a deque: stable addresses).
-inline std::vector<SurfCase> load_surface_cases(const char* source_dir, const ref::HwParams& p,
+inline std::vector<SurfCase> load_surface_cases(const ref::HwParams& p,
                                                 std::deque<scene::CompiledScene>& keep) {
   std::vector<SurfCase> out;
-  for (const char* name : {"surf_ellipsoid", "surf_relief", "surf_spiral", "surf_snail",
-                           "surf_rocket", "surf_mix"}) {
-    keep.push_back(scene::compile_scene(
-        scene::load_scene(std::string(source_dir) + "/scenes/" + name + ".json")));
+  for (const char* name : kSurfaceScenes) {
+    keep.push_back(compiled_demo_scene(name));
     const ref::ModelScene m = ref::quantize_scene(keep.back(), p);
     for (size_t k = 0; k < m.surfaces.size(); ++k)
       out.push_back({std::string(name) + "[" + std::to_string(k) + "]", &keep.back(),
@@ -185,40 +188,40 @@ inline std::vector<int> piece_indices(const ref::SurfaceDesc& d, std::mt19937_64
   return v;
 }
 
-inline i128 random_bits(std::mt19937_64& rng, int width) {
-  const u128 bits = (static_cast<u128>(rng()) << 64) | rng();
-  return static_cast<i128>(width >= 128 ? bits : bits & ((u128{1} << width) - 1));
-}
-
 // The indicator fields of a descriptor redrawn within rpu_indicator's port contract (its type
 // and the setup's fields kept): the spiral's and snail's turn constants over their whole width
 // (the lane offsets saturate: overflow), the rocket's fin and cone constants, the scales and r2
-// of the quadrics; full_turns ≤ turns − 1, so full_turns + last_turn ≤ turns.
-inline i128 random_magnitude(std::mt19937_64& rng, int width) {  // signed, of a random length
-  const int w = 1 + static_cast<int>(rng() % static_cast<unsigned>(width));
-  const i128 u = random_bits(rng, w);
-  return u >= (i128{1} << (w - 1)) ? u - (i128{1} << w) : u;
-}
+// of the quadrics; full_turns < turns. whole_ports (rpu_indicator's own testbench): also the
+// scales over their whole ports, any shift of the ScaledConsts and r2 at its top.
 inline ref::SurfaceDesc edit_indicator_fields(ref::SurfaceDesc s, const ref::HwParams& p,
-                                              int turns, std::mt19937_64& rng) {
+                                              int turns, std::mt19937_64& rng,
+                                              bool whole_ports = false) {
   const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w();
-  const auto unit_scale = [&] {
-    return static_cast<std::int64_t>(1 + random_bits(rng, kf) % (i128{1} << kf));
+  const auto unit_scale = [&] {  // mostly in (0, 1]
+    return static_cast<std::int64_t>(whole_ports && rng() % 4 == 0
+                                         ? random_bits(rng, kf + 1)
+                                         : 1 + random_bits(rng, kf) % (i128{1} << kf));
   };
   const auto scaled = [&] {
     ref::ScaledConst c;
     c.m = static_cast<std::int64_t>(random_magnitude(rng, mw));
-    c.s = static_cast<int>(rng() % static_cast<unsigned>(2 * lw + 8));
+    c.s = static_cast<int>(whole_ports && rng() % 4 == 0
+                               ? rng() % 128
+                               : rng() % static_cast<unsigned>(2 * lw + 8));
     return c;
   };
   const i128 r2_max = i128{1} << (2 * lw);
+  const auto r2 = [&] {
+    return whole_ports && rng() % 8 == 0 ? r2_max - static_cast<i128>(rng() % 3)
+                                         : random_bits(rng, 2 * lw + 1) % (r2_max + 1);
+  };
   switch (s.type) {
     case scene::SurfaceType::kEllipsoid:
     case scene::SurfaceType::kReliefEllipsoid:
       s.sx = unit_scale();
       s.sy = unit_scale();
       s.sz = unit_scale();
-      s.r2 = random_bits(rng, 2 * lw + 1) % (r2_max + 1);
+      s.r2 = r2();
       s.kd = static_cast<std::int64_t>(random_magnitude(rng, kf + 2));
       s.ke2 = static_cast<std::int64_t>(random_magnitude(rng, kf + 2));
       s.y_angle = scaled();
@@ -226,7 +229,7 @@ inline ref::SurfaceDesc edit_indicator_fields(ref::SurfaceDesc s, const ref::HwP
     case scene::SurfaceType::kSpiral:
       s.sx = unit_scale();
       s.sy = unit_scale();
-      s.r2 = random_bits(rng, 2 * lw + 1) % (r2_max + 1);
+      s.r2 = r2();
       s.rho0 = static_cast<std::int64_t>(random_magnitude(rng, lw));
       [[fallthrough]];
     case scene::SurfaceType::kSnail:
@@ -245,91 +248,18 @@ inline ref::SurfaceDesc edit_indicator_fields(ref::SurfaceDesc s, const ref::HwP
 }
 
 // The indicator fields of a SurfaceDesc on rpu_indicator's port names (rpu_surface_ip and
-// rpu_surface_top share them), and junk on them.
+// rpu_surface_top share them).
 template <class Top>
-void drive_indicator_fields(Top& top, const ref::HwParams& p, const ref::SurfaceDesc& s) {
+void indicator_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::SurfaceDesc& s) {
   const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w(), tw = lw + 8;
-  top.type_i = static_cast<unsigned>(s.type);
-  top.full_turns_i = static_cast<unsigned>(s.full_turns);
-  put(top.sx_i, s.sx, kf + 1);
-  put(top.sy_i, s.sy, kf + 1);
-  put(top.sz_i, s.sz, kf + 1);
-  put(top.r2_i, s.r2, 2 * lw + 1);
-  put(top.kd_i, s.kd, kf + 2);
-  put(top.ke2_i, s.ke2, kf + 2);
-  put(top.y_angle_m_i, s.y_angle.m, mw);
-  put(top.y_angle_s_i, s.y_angle.s, 8);
-  put(top.rho0_i, s.rho0, lw);
-  put(top.a_turn_i, s.a_turn, tw);
-  put(top.k_turn_i, s.k_turn, tw);
-  put(top.rocket_a_i, s.rocket_a, lw);
-  put(top.rocket_b_i, s.rocket_b, lw);
-  put(top.fin_m_i, s.fin.m, mw);
-  put(top.fin_s_i, s.fin.s, 8);
-  put(top.cone_m_i, s.cone.m, mw);
-  put(top.cone_s_i, s.cone.s, 8);
+  in("type", top.type_i, static_cast<int>(s.type), 3)("full_turns", top.full_turns_i, s.full_turns, 4);
+  in("sx", top.sx_i, s.sx, kf + 1)("sy", top.sy_i, s.sy, kf + 1)("sz", top.sz_i, s.sz, kf + 1);
+  in("r2", top.r2_i, s.r2, 2 * lw + 1)("kd", top.kd_i, s.kd, kf + 2)("ke2", top.ke2_i, s.ke2, kf + 2);
+  in("y_angle_m", top.y_angle_m_i, s.y_angle.m, mw)("y_angle_s", top.y_angle_s_i, s.y_angle.s, 8);
+  in("rho0", top.rho0_i, s.rho0, lw)("a_turn", top.a_turn_i, s.a_turn, tw)("k_turn", top.k_turn_i, s.k_turn, tw);
+  in("rocket_a", top.rocket_a_i, s.rocket_a, lw)("rocket_b", top.rocket_b_i, s.rocket_b, lw);
+  in("fin_m", top.fin_m_i, s.fin.m, mw)("fin_s", top.fin_s_i, s.fin.s, 8);
+  in("cone_m", top.cone_m_i, s.cone.m, mw)("cone_s", top.cone_s_i, s.cone.s, 8);
 }
-template <class Top>
-void drive_indicator_junk(Top& top, const ref::HwParams& p, std::mt19937_64& rng) {
-  const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w(), tw = lw + 8;
-  const auto r = [&](int w) { return random_bits(rng, w); };
-  top.type_i = static_cast<unsigned>(r(3));
-  top.full_turns_i = static_cast<unsigned>(r(4));
-  put(top.sx_i, r(kf + 1), kf + 1);
-  put(top.sy_i, r(kf + 1), kf + 1);
-  put(top.sz_i, r(kf + 1), kf + 1);
-  put(top.r2_i, r(2 * lw + 1), 2 * lw + 1);
-  put(top.kd_i, r(kf + 2), kf + 2);
-  put(top.ke2_i, r(kf + 2), kf + 2);
-  put(top.y_angle_m_i, r(mw), mw);
-  put(top.y_angle_s_i, r(8), 8);
-  put(top.rho0_i, r(lw), lw);
-  put(top.a_turn_i, r(tw), tw);
-  put(top.k_turn_i, r(tw), tw);
-  put(top.rocket_a_i, r(lw), lw);
-  put(top.rocket_b_i, r(lw), lw);
-  put(top.fin_m_i, r(mw), mw);
-  put(top.fin_s_i, r(8), 8);
-  put(top.cone_m_i, r(mw), mw);
-  put(top.cone_s_i, r(8), 8);
-}
-
-// Fields appended LSB first into a port of any width (vectors {z, y, x}, M row-major).
-struct PortBits {
-  std::array<std::uint32_t, 64> w{};
-  int n = 0;
-  void add(i128 v, int width) {
-    const u128 u = static_cast<u128>(v);
-    for (int b = 0; b < width; ++b, ++n) {
-      const bool bit = b < 128 ? ((u >> b) & 1) != 0 : v < 0;
-      if (bit) w[static_cast<size_t>(n / 32)] |= 1u << (n % 32);
-    }
-  }
-  void add3(const ref::IVec3& v, int width) {
-    add(v.x, width);
-    add(v.y, width);
-    add(v.z, width);
-  }
-  template <std::size_t N>
-  void to(VlWide<N>& port) const {
-    for (std::size_t k = 0; k < N; ++k) port[k] = w[k];
-  }
-  template <class T>
-  void to(T& port) const {
-    port = static_cast<T>(w[0] | (static_cast<std::uint64_t>(w[1]) << 32));
-  }
-};
-
-inline std::string str(const ref::WVec3& v) {
-  std::string s("(");
-  s += to_string(v.x);
-  s += ", ";
-  s += to_string(v.y);
-  s += ", ";
-  s += to_string(v.z);
-  s += ")";
-  return s;
-}
-inline std::string str(const ref::IVec3& v) { return str(ref::WVec3{v.x, v.y, v.z}); }
 
 }  // namespace rpu::sim
