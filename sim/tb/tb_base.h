@@ -7,12 +7,13 @@
 //       vector count (tb.vectors(default), RPU_VECTORS), clock (tick), reset, the FST trace on
 //       request (+trace, or RPU_TRACE=1: each failing test keeps <test>.fst in RPU_TRACE_DIR or
 //       the working directory), FAILURE lines (fail) and the "matched N items" line (pass).
-//   tb.run(items, stream)  plays a list of items through a valid_i/valid_o unit and checks every
-//       result, in order, against its item: the source offers the next item with random gaps
-//       (junk on every input in between), holds it until ready_o takes it where the unit has
-//       ready_o, and drives random ready_i backpressure where it has ready_i (a held output must
-//       stay unchanged); a random tag (tag_i/tag_o) and the fixed latency are checked with the
-//       fields; valid_o with no item outstanding, a timeout and a valid_o after the drain fail.
+//   tb.run(items, stream)  plays a list of items through a valid_i/valid_o unit (reset first)
+//       and checks every result, in order, against its item: the source offers the next item with
+//       random gaps (junk on every input in between), holds it until ready_o takes it where the
+//       unit has ready_o, and drives random ready_i backpressure where it has ready_i (a held
+//       output must stay unchanged); a random tag (tag_i/tag_o) and the fixed latency are checked
+//       with the fields; valid_o with no item outstanding, a timeout and a valid_o after the
+//       drain fail. tb.check(items, stream, details...): run, then pass; the exit status.
 //   Stream<Top, Item>  what the unit's testbench says: its input fields (Inputs: drive, junk and
 //       report from one list), its output fields (Outputs: read, compare and report), the latency,
 //       the tag width and the traffic pattern.
@@ -316,6 +317,7 @@ class Testbench {
     top_->rst_ni = 0;
     for (int k = 0; k < cycles; ++k) tick();
     top_->rst_ni = 1;
+    was_reset_ = true;
   }
 
   // "FAILURE: ..." (the trace flushed and kept); returns 1, the exit status.
@@ -330,22 +332,29 @@ class Testbench {
   }
   // "<name>: matched N items in C cycles (details)"; returns 0.
   int pass(const char* fmt = nullptr, ...) __attribute__((format(printf, 2, 3))) {
-    std::printf("%s: matched %ld items in %ld cycles", name_, matched_, cycle_);
-    if (fmt) {
-      std::va_list ap;
-      va_start(ap, fmt);
-      std::printf(" (");
-      std::vprintf(fmt, ap);
-      std::printf(")");
-      va_end(ap);
-    }
-    std::printf("\n");
+    std::va_list ap;
+    va_start(ap, fmt);
+    vpass(fmt, ap);
+    va_end(ap);
+    return 0;
+  }
+  // One run, then pass(details): a testbench's exit status.
+  template <class Items, class Item = typename Items::value_type>
+  [[gnu::format(printf, 4, 5)]] int check(const Items& items, const Stream<Top, Item>& s,
+                                          const char* fmt = nullptr, ...) {
+    if (!run(items, s)) return 1;
+    std::va_list ap;
+    va_start(ap, fmt);
+    vpass(fmt, ap);
+    va_end(ap);
     return 0;
   }
 
-  // Plays `items` (a vector or deque of Item) through the unit; see the header.
+  // Plays `items` (a vector or deque of Item) through the unit, reset first if it has not been;
+  // see the header.
   template <class Items, class Item = typename Items::value_type>
   RunResult run(const Items& items, const Stream<Top, Item>& s) {
+    if (!was_reset_) reset();
     Top& t = *top_;
     constexpr bool kReadyO = requires { t.ready_o; };
     constexpr bool kReadyI = requires { t.ready_i; };
@@ -477,6 +486,15 @@ class Testbench {
     std::printf("%s: this build has no trace support (configure with -DRPU_SIM_TRACE=ON)\n", name_);
 #endif
   }
+  void vpass(const char* fmt, std::va_list ap) {
+    std::printf("%s: matched %ld items in %ld cycles", name_, matched_, cycle_);
+    if (fmt) {
+      std::printf(" (");
+      std::vprintf(fmt, ap);
+      std::printf(")");
+    }
+    std::printf("\n");
+  }
   void dump() {
 #if VM_TRACE_FST
     if (fst_) fst_->dump(ctx_->time());
@@ -532,8 +550,14 @@ class Testbench {
   std::unique_ptr<VerilatedFstC> fst_;
 #endif
   std::string trace_path_;
-  bool keep_trace_ = false, failed_ = false, settled_ = false;
+  bool keep_trace_ = false, failed_ = false, settled_ = false, was_reset_ = false;
   long cycle_ = 0, matched_ = 0;
 };
 
 }  // namespace rpu::sim
+
+// A testbench is one translation unit on this base: the project's namespace and the wide integer
+// types are its vocabulary.
+using namespace rpu;  // NOLINT(google-build-using-namespace)
+using sim::i128;
+using sim::u128;

@@ -111,6 +111,44 @@ inline i128 random_magnitude(std::mt19937_64& rng, int width) {
   return random_signed(rng, w);
 }
 
+// t over Q(3.FT): mostly inside [0, 1], some within 8 LSB of its ends, a quarter anywhere.
+inline i128 random_t(std::mt19937_64& rng, int t_frac) {
+  const i128 one = i128{1} << t_frac;
+  switch (rng() % 8) {
+    case 0: return static_cast<i128>(rng() % 17) - 8;
+    case 1: return one + static_cast<i128>(rng() % 17) - 8;
+    case 2:
+    case 3: return random_signed(rng, t_frac + 3);
+    default: return random_bits(rng, t_frac + 1) % (one + 1);
+  }
+}
+// Whether every component of v fits a w-bit two's-complement port.
+template <class V>
+bool fits_signed3(const V& v, int w) {
+  return fixed::fits_signed(v.x, w) && fixed::fits_signed(v.y, w) && fixed::fits_signed(v.z, w);
+}
+// Vectors: integer to double and back (rounded), a random unit direction, and a direction
+// quantised as the ray generator's v̂ (Q(2.FV); zero for a zero vector).
+inline Vec3 to_vec(const ref::IVec3& v) {
+  return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
+inline ref::IVec3 round3(const Vec3& v) {
+  return {std::llround(v.x), std::llround(v.y), std::llround(v.z)};
+}
+inline Vec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Vec3 u;
+  do u = {g(rng), g(rng), g(rng)};
+  while (length(u) < 1e-6);
+  return normalize(u);
+}
+inline ref::IVec3 quantise_dir(const ref::HwParams& p, const Vec3& d) {
+  if (length(d) < 1e-12) return {};
+  const Vec3 u = normalize(d);
+  return {std::llround(std::ldexp(u.x, p.dir_frac)), std::llround(std::ldexp(u.y, p.dir_frac)),
+          std::llround(std::ldexp(u.z, p.dir_frac))};
+}
+
 // A flat guide as the descriptor compiler quantises one of height h (in LSB, beyond
 // kFlatRatio·L) on a segment of length² L2: a = L²/2h, b = L²/4h² in Q(0.FT); straight when
 // a rounds to 0.

@@ -16,10 +16,6 @@
 #error "CORDIC_W, CORDIC_AW, CORDIC_ITERS and CORDIC_MODE must match the verilated parameters"
 #endif
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr ref::CordicConfig kConfig{CORDIC_W, CORDIC_AW, CORDIC_ITERS};
 constexpr bool kVectoring = CORDIC_MODE == 0;
 constexpr int kW = CORDIC_W, kAW = CORDIC_AW;
@@ -109,9 +105,7 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::cordic_latency(kConfig, kVectoring);
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("W=%d AW=%d Iters=%d %s, latency %ld, %s", kW, kAW, CORDIC_ITERS,
-                 kVectoring ? "vectoring" : "rotation", s.latency,
-                 exhaustive ? "exhaustive" : "edges + random");
+  return tb.check(items, s, "W=%d AW=%d Iters=%d %s, latency %ld, %s", kW, kAW, CORDIC_ITERS,
+                  kVectoring ? "vectoring" : "rotation", s.latency,
+                  exhaustive ? "exhaustive" : "edges + random");
 }

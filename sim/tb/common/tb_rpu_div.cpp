@@ -13,10 +13,6 @@
 #define RECIP_FV 0
 #endif
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr int kNumW = NUM_W, kDenW = DEN_W, kQuotW = QUOT_W;
 
 // The quotient fits QuotW bits (and the operands their ports).
@@ -109,8 +105,6 @@ int main(int argc, char** argv) {
   };
   s.latency = kQuotW;
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("NumW=%d DenW=%d QuotW=%d TagW=%d, %s", kNumW, kDenW, kQuotW, TAG_W,
-                 exhaustive ? "exhaustive" : "edges + random");
+  return tb.check(items, s, "NumW=%d DenW=%d QuotW=%d TagW=%d, %s", kNumW, kDenW, kQuotW, TAG_W,
+                  exhaustive ? "exhaustive" : "edges + random");
 }

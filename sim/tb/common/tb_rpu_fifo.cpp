@@ -21,10 +21,6 @@
 #define LOG2_DEPTH 8
 #endif
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 int main(int argc, char** argv) {
   constexpr int kWidth = WIDTH, kLog2 = LOG2_DEPTH;
   static_assert(kWidth <= 128, "the testbench compares up to 128-bit entries");

@@ -29,10 +29,6 @@
 #define LATENCY 0
 #endif
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr int kAW = A_W, kBW = B_W, kChA = CHUNK_A, kChB = CHUNK_B;
 constexpr bool kSigned = SIGNED != 0;
 constexpr int kTiles = ((kAW - SIGNED + kChA - 1) / kChA) * ((kBW - SIGNED + kChB - 1) / kChB);
@@ -95,7 +91,6 @@ int main(int argc, char** argv) {
   };
   s.latency = kLatency;
   s.tag_w = 1;
-  tb.reset();
   if (!tb.run(items, s)) return 1;
 
   // A reset with every stage holding an operand and valid_i high during it: the flushed operands

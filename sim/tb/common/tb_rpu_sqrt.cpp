@@ -9,10 +9,6 @@
 #error "RAD_W must be defined to the RadW parameter of the verilated configuration"
 #endif
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_sqrt> tb("tb_rpu_sqrt", argc, argv);
   constexpr int kRadW = RAD_W;
@@ -57,7 +53,6 @@ int main(int argc, char** argv) {
   };
   s.latency = sim::kSameLatency;
   s.tag_w = 1;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("RadW=%d SqrtW=%d, %s", kRadW, SQRT_W, exhaustive ? "exhaustive" : "edges + random");
+  return tb.check(items, s, "RadW=%d SqrtW=%d, %s", kRadW, SQRT_W,
+                  exhaustive ? "exhaustive" : "edges + random");
 }

@@ -13,10 +13,6 @@
 #include "Vrpu_candidate.h"
 #include "tb_ip_common.h"
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 struct Item {
   size_t seg;
   ref::SegmentDesc s;  // the segment's descriptor, edited or not
@@ -118,8 +114,7 @@ int main(int argc, char** argv) {
   };
   s.what = [](const Item& it) { return "segment " + std::to_string(it.seg) + (it.edited ? " (edited)" : ""); };
   s.latency = sim::kSameLatency;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("metric %d, %ld pairs edited, %ld of them long flat; %ld saturated, %ld with t < 0",
-                 METRIC, n_edited, n_long, n_sat, n_neg);
+  return tb.check(items, s,
+                  "metric %d, %ld pairs edited, %ld of them long flat; %ld saturated, %ld with "
+                  "t < 0", METRIC, n_edited, n_long, n_sat, n_neg);
 }

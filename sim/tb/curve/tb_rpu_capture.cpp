@@ -9,9 +9,6 @@
 #include "Vrpu_capture.h"
 #include "tb_base.h"
 
-using namespace rpu;
-using sim::i128;
-
 struct Item {
   int i, j;
   ref::WVec3 X;
@@ -137,7 +134,5 @@ int main(int argc, char** argv) {
   };
   s.latency = sim::kSameLatency;
   s.tag_w = 1;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("%ld hits", hits);
+  return tb.check(items, s, "%ld hits", hits);
 }

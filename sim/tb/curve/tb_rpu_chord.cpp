@@ -6,10 +6,6 @@
 #include "Vrpu_chord.h"
 #include "tb_base.h"
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_chord> tb("tb_rpu_chord", argc, argv);
   auto& rng = tb.rng;
@@ -72,7 +68,5 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::chord_latency(p);
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("DotW=%d InvW=%d TFrac=%d, %ld saturated", DotW, IW, FT, saturated);
+  return tb.check(items, s, "DotW=%d InvW=%d TFrac=%d, %ld saturated", DotW, IW, FT, saturated);
 }

@@ -18,9 +18,6 @@
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
 using sim::random_bits;
 
 constexpr int kCW = COORD_W, kFT = T_FRAC, kFU = UNIT_FRAC;
@@ -45,18 +42,6 @@ ref::IVec3 random_vec(std::mt19937_64& rng, int width) {
   return {static_cast<fixed::i64>(random_value(rng, width)),
           static_cast<fixed::i64>(random_value(rng, width)),
           static_cast<fixed::i64>(random_value(rng, width))};
-}
-
-// t over Q(3.FT): mostly inside [0, 1], some near its ends, the rest anywhere.
-i128 random_t(std::mt19937_64& rng) {
-  const i128 one = i128{1} << kFT;
-  switch (rng() % 8) {
-    case 0: return static_cast<i128>(rng() % 17) - 8;
-    case 1: return one + static_cast<i128>(rng() % 17) - 8;
-    case 2:
-    case 3: return random_bits(rng, kTW) + fixed::min_signed(kTW);
-    default: return random_bits(rng, kFT + 1) % (one + 1);
-  }
 }
 
 }  // namespace
@@ -103,7 +88,7 @@ int main(int argc, char** argv) {
   for (long k = 0; k < random_count; ++k) {
     Op op;
     op.seg = segs[rng() % segs.size()];
-    op.t = random_t(rng);
+    op.t = sim::random_t(rng, kFT);
     const int sw = sqrt_ws[rng() % 6];
     if (rng() % 10 == 0) {  // g of another t in [0, 1] (t in [0, 1] too)
       op.t = random_bits(rng, kFT + 1) % (one + 1);
@@ -158,12 +143,11 @@ int main(int argc, char** argv) {
   s.what = [](const Op& op) { return op.full_range ? "full range, modulo 2^XW" : "scene"; };
   s.latency = ref::curve_point_latency(p);  // its header: products of t, of u, the sum
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(ops, s)) return 1;
-  return tb.pass("CoordW=%d TFrac=%d UnitFrac=%d TagW=%d latency %ld; %zu segments: %ld edges + %ld "
-                 "random scene items, max |X| = %.4f·2^CW; %ld full-range items modulo 2^(CW+3), "
-                 "%ld components beyond CW+3 bits",
-                 kCW, kFT, kFU, TAG_W, s.latency, segs.size(), edge_count, random_count,
-                 static_cast<double>(max_abs_x) / static_cast<double>(i128{1} << kCW), full_count,
-                 wrapped);
+  return tb.check(ops, s,
+                  "CoordW=%d TFrac=%d UnitFrac=%d TagW=%d latency %ld; %zu segments: %ld edges + "
+                  "%ld random scene items, max |X| = %.4f·2^CW; %ld full-range items modulo "
+                  "2^(CW+3), %ld components beyond CW+3 bits", kCW, kFT, kFU, TAG_W, s.latency,
+                  segs.size(), edge_count, random_count,
+                  static_cast<double>(max_abs_x) / static_cast<double>(i128{1} << kCW), full_count,
+                  wrapped);
 }

@@ -20,10 +20,6 @@
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::random_bits;
-using sim::random_signed;
 using sim::random_spread;
 using ld = long double;
 
@@ -65,18 +61,6 @@ Op design_guide(std::mt19937_64& rng, std::uniform_real_distribution<double>& un
     op.b = std::llround(std::ldexp(static_cast<ld>(op.l2) / (4 * h * h), kFT));
   }
   return op;
-}
-
-// t over Q(3.FT): mostly inside [0, 1], some near its ends, the rest anywhere (w clamps).
-i128 random_t(std::mt19937_64& rng) {
-  const i128 one = i128{1} << kFT;
-  switch (rng() % 8) {
-    case 0: return static_cast<i128>(rng() % 17) - 8;
-    case 1: return one + static_cast<i128>(rng() % 17) - 8;
-    case 2:
-    case 3: return random_signed(rng, kTW);
-    default: return random_bits(rng, kFT + 1) % (one + 1);
-  }
 }
 
 }  // namespace
@@ -157,7 +141,7 @@ int main(int argc, char** argv) {
       op.g[1] = design_guide(rng, unit, L);
       ++design;
     }
-    op.g[0].t = random_t(rng);
+    op.g[0].t = sim::random_t(rng, kFT);
     ops.push_back(op);
   }
 
@@ -195,11 +179,9 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::guide_pair_latency(p);  // its header: w, the products, the roots
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(ops, s)) return 1;
-  return tb.pass("CoordW=%d TFrac=%d SqrtW=%d HhIn=%d TagW=%d latency %ld; %ld edges, %ld "
-                 "descriptor-like, %ld full-range; %ld arc, %ld flat guides, %ld overflow, %ld "
-                 "negative g",
-                 kCW, kFT, SQRT_W, static_cast<int>(kHhIn), TAG_W, s.latency, edge_count, design,
-                 raw, arcs, flats, overflows, negative_g);
+  return tb.check(ops, s,
+                  "CoordW=%d TFrac=%d SqrtW=%d HhIn=%d TagW=%d latency %ld; %ld edges, %ld "
+                  "descriptor-like, %ld full-range; %ld arc, %ld flat guides, %ld overflow, %ld "
+                  "negative g", kCW, kFT, SQRT_W, static_cast<int>(kHhIn), TAG_W, s.latency,
+                  edge_count, design, raw, arcs, flats, overflows, negative_g);
 }

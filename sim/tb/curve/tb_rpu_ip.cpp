@@ -26,10 +26,6 @@ constexpr const char* kName = "rpu_ip";
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 struct Item {
   size_t seg;
   ref::SegmentDesc s;  // the segment's descriptor, edited or not
@@ -188,7 +184,6 @@ int main(int argc, char** argv) {
     return e;
   };
 #endif
-  tb.reset();
   if (!tb.run(items, s)) return 1;
   return tb.pass("%s n=%d n1=%d metric %d %s, %.3f items/cycle; pairs edited %ld (far misses %ld), "
                  "ends' md replaced %ld, results with md's top bit %ld",

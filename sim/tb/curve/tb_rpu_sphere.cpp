@@ -18,10 +18,7 @@
 
 namespace {
 
-using namespace rpu;
 using fixed::i64;
-using fixed::u128;
-using sim::i128;
 
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
@@ -45,10 +42,10 @@ struct Expected {
 };
 struct Item {
   Source src;
-  int i = 0, j = 0, seg = 0;  // pixel and segment (scene sources), or vector index
+  int i, j, seg;  // pixel and segment (scene sources), or vector index
   ref::IVec3 eye, vhat;
-  const ref::SegmentDesc* s = nullptr;
-  Expected want;
+  const ref::SegmentDesc* s;
+  Expected want = {};
 };
 
 Expected expected(const Item& it) {
@@ -59,29 +56,14 @@ Expected expected(const Item& it) {
   return e;
 }
 
-bool fits3(const ref::IVec3& v, int w) {
-  return fixed::fits_signed(v.x, w) && fixed::fits_signed(v.y, w) && fixed::fits_signed(v.z, w);
-}
 // The item's inputs must be representable on the ports (every scene-derived value is).
 bool fits_ports(const Item& it) {
   const ref::SegmentDesc& s = *it.s;
-  return fits3(it.eye, CW) && fits3(it.vhat, DirW) && fits3(s.c0, CW) && fits3(s.p1, CW) &&
-         fits3(s.d, DiffW) && s.R2 >= 0 && fixed::fits_unsigned(static_cast<u128>(s.R2), R2W) &&
+  using sim::fits_signed3;
+  return fits_signed3(it.eye, CW) && fits_signed3(it.vhat, DirW) && fits_signed3(s.c0, CW) &&
+         fits_signed3(s.p1, CW) && fits_signed3(s.d, DiffW) && s.R2 >= 0 && fixed::fits_unsigned(static_cast<u128>(s.R2), R2W) &&
          s.inv_m >= 0 && fixed::fits_unsigned(static_cast<u128>(s.inv_m), kP.inv_w) &&
          s.inv_s >= 0 && s.inv_s < (1 << kInvSW);
-}
-
-Item make_item(Source src, int i, int j, int seg, const ref::IVec3& eye, const ref::IVec3& vhat,
-               const ref::SegmentDesc* s) {
-  Item it;
-  it.src = src;
-  it.i = i;
-  it.j = j;
-  it.seg = seg;
-  it.eye = eye;
-  it.vhat = vhat;
-  it.s = s;
-  return it;
 }
 
 // The descriptor formula for 1/L² (descriptors.cpp).
@@ -161,8 +143,8 @@ int main(int argc, char** argv) {
     for (const auto* list : {&grid_hit, &off_hit, &grid_miss})
       for (const Pair& pr : *list) {
         const ref::RayGenOut ray = ref::ray_generator(p, m.camera, pr.i, pr.j);
-        items.push_back(make_item(kCurve12, pr.i, pr.j, pr.k, m.camera.eye, ray.vhat,
-                                  segs[static_cast<size_t>(pr.k)]));
+        items.push_back(Item{kCurve12, pr.i, pr.j, pr.k, m.camera.eye, ray.vhat,
+                             segs[static_cast<size_t>(pr.k)]});
       }
   }
 
@@ -192,7 +174,7 @@ int main(int argc, char** argv) {
         const int j = static_cast<int>(rng() % m.camera.height);
         const int k = static_cast<int>(rng() % segs.size());
         const ref::RayGenOut ray = ref::ray_generator(p, m.camera, i, j);
-        const Item it = make_item(kRandomScene, i, j, k, m.camera.eye, ray.vhat, segs[k]);
+        const Item it{kRandomScene, i, j, k, m.camera.eye, ray.vhat, segs[k]};
         if (expected(it).si.pred1 ? hits++ < 1500 : misses++ < 500) items.push_back(it);
       }
     }
@@ -210,9 +192,8 @@ int main(int argc, char** argv) {
     s.d = {i64{1} << (CW - 4), 0, 0};
     set_inverse(s);
     items.push_back(
-        make_item(kEdge, 0, 0, 0, {top_c, top_c, top_c}, {one * 7 / 10, one * 7 / 10, 0}, keep(s)));
+        Item{kEdge, 0, 0, 0, {top_c, top_c, top_c}, {one * 7 / 10, one * 7 / 10, 0}, keep(s)});
     int idx = 1;
-    std::normal_distribution<double> g(0.0, 1.0);
     const i128 r2s[] = {static_cast<i128>(fixed::max_unsigned(R2W)), i128{1} << (2 * CW),
                         i128{1} << (2 * CW - 2),
                         i128{1} << CW, 100};
@@ -223,9 +204,8 @@ int main(int argc, char** argv) {
         if (dn < 6) u = {dn / 2 == 0 ? (dn % 2 ? 1.0 : -1.0) : 0.0, dn / 2 == 1 ? (dn % 2 ? 1.0 : -1.0) : 0.0,
                          dn / 2 == 2 ? (dn % 2 ? 1.0 : -1.0) : 0.0};
         else if (dn < 14) u = normalize(Vec3{dn & 1 ? 1.0 : -1.0, dn & 2 ? 1.0 : -1.0, dn & 4 ? 1.0 : -1.0});
-        else u = normalize(Vec3{g(rng), g(rng), g(rng)});
-        const ref::IVec3 vhat = {std::llround(std::ldexp(u.x, FV)), std::llround(std::ldexp(u.y, FV)),
-                                 std::llround(std::ldexp(u.z, FV))};
+        else u = sim::random_unit(rng);
+        const ref::IVec3 vhat = sim::quantise_dir(kP, u);
         for (int cc = 0; cc < 3; ++cc) {
           ref::SegmentDesc t;
           // Centre: the same corner, the opposite corner, a random point.
@@ -239,7 +219,7 @@ int main(int argc, char** argv) {
           set_inverse(t);
           for (i128 r2 : r2s) {
             t.R2 = r2;
-            items.push_back(make_item(kEdge, idx++, 0, 0, eye, vhat, keep(t)));
+            items.push_back(Item{kEdge, idx++, 0, 0, eye, vhat, keep(t)});
           }
         }
       }
@@ -269,7 +249,7 @@ int main(int argc, char** argv) {
             const ref::IVec3 eye = {pick(e & 1, top_c, min_c), pick(e & 2, top_c, min_c),
                                     pick(e & 4, top_c, min_c)};
             const ref::IVec3 vhat = {vs[v % 3], vs[(v / 3) % 3], vs[v / 9]};
-            items.push_back(make_item(kCorner, idx++, 0, 0, eye, vhat, keep(s)));
+            items.push_back(Item{kCorner, idx++, 0, 0, eye, vhat, keep(s)});
           }
   }
 
@@ -295,14 +275,9 @@ int main(int argc, char** argv) {
         set_inverse(s);
       }
       ref::IVec3 vhat = {rnd_signed(DirW), rnd_signed(DirW), rnd_signed(DirW)};
-      if (k % 3 == 0) {  // a unit direction, as the ray generator makes
-        std::normal_distribution<double> g(0.0, 1.0);
-        const Vec3 u = normalize(Vec3{g(rng), g(rng), g(rng)});
-        vhat = {std::llround(std::ldexp(u.x, FV)), std::llround(std::ldexp(u.y, FV)),
-                std::llround(std::ldexp(u.z, FV))};
-      }
+      if (k % 3 == 0) vhat = sim::quantise_dir(kP, sim::random_unit(rng));  // as the ray generator
       const ref::IVec3 eye = {rnd_signed(CW), rnd_signed(CW), rnd_signed(CW)};
-      items.push_back(make_item(kRandom, static_cast<int>(k), 0, 0, eye, vhat, keep(s)));
+      items.push_back(Item{kRandom, static_cast<int>(k), 0, 0, eye, vhat, keep(s)});
     }
   }
 
@@ -357,8 +332,7 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::sphere_latency(p);
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("CoordW=%d DirFrac=%d TFrac=%d InvW=%d SqrtW=%d, latency %ld, %ld with pred1", CW,
-                 FV, kP.t_frac, kP.inv_w, kP.sqrt_w, s.latency, all_hits);
+  return tb.check(items, s,
+                  "CoordW=%d DirFrac=%d TFrac=%d InvW=%d SqrtW=%d, latency %ld, %ld with pred1", CW,
+                  FV, kP.t_frac, kP.inv_w, kP.sqrt_w, s.latency, all_hits);
 }

@@ -38,10 +38,7 @@
 
 namespace {
 
-using namespace rpu;
 using scene::SurfaceType;
-using sim::i128;
-using sim::u128;
 
 constexpr int kLw = SURF_W, kAw = ANGLE_W, kLanes = LANES;
 constexpr int kKf = kLw, kMw = kLw + 2, kTurnW = kLw + 8, kCw = kLw + 6;
@@ -529,7 +526,5 @@ int main(int argc, char** argv) {
   };
   s.latency = kLatency;
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass();
+  return tb.check(items, s);
 }

@@ -26,10 +26,6 @@
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 const ref::HwParams kP = sim::tb_params();
 const int LW = kP.surf_w;
 constexpr int kCtxW = CTX_W, kTurns = TURNS;
@@ -90,12 +86,7 @@ int main(int argc, char** argv) {
         d = &edited.back();
       }
       for (int piece : sim::piece_indices(*d, rng)) {
-        Item it;
-        it.kind = kind;
-        it.surf = r.surf;
-        it.ray = r;
-        it.piece = piece;
-        it.d = d;
+        Item it{.kind = kind, .surf = r.surf, .ray = r, .piece = piece, .d = d};
         fixed::Overflow setup_ovf;
         it.su = ref::surface_setup(kP, r.eye, r.vhat, *d, piece, setup_ovf);
         if (!it.su.valid) {  // junk the unit must ignore (run_i = 0)
@@ -121,10 +112,7 @@ int main(int argc, char** argv) {
     add_rays(kEdited, edit_rays);
     // Random pieces: lA', lB' anywhere in the LW range, the branch bits at random.
     for (int n = 0; n < 60 * scale; ++n) {
-      Item it;
-      it.kind = kRandomPiece;
-      it.surf = s;
-      it.d = &S.d;
+      Item it{.kind = kRandomPiece, .surf = s, .d = &S.d};
       const auto coord = [&] { return sim::random_magnitude(rng, LW); };
       const ref::WVec3 a{coord(), coord(), coord()}, b{coord(), coord(), coord()};
       it.su.valid = true;
@@ -180,7 +168,5 @@ int main(int argc, char** argv) {
   };
   s.latency = latency;
   s.timeout = 20 * static_cast<long>(items.size()) * (kP.K() + 2) + 4 * latency;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass();
+  return tb.check(items, s);
 }

@@ -31,11 +31,8 @@
 
 namespace {
 
-using namespace rpu;
 using fixed::i64;
-using fixed::u128;
 using scene::SurfaceType;
-using sim::i128;
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
@@ -64,12 +61,12 @@ struct Expected {
 
 struct Item {
   Source src;
-  int surf = 0;     // index into the surface list
-  int i = 0, j = 0;  // pixel (camera rays) or vector index
-  int piece = 0;
+  int surf;  // index into the surface list
+  int i, j;  // pixel (camera rays) or vector index
+  int piece;
   ref::IVec3 eye, vhat;
-  const ref::SurfaceDesc* s = nullptr;
-  Expected want;
+  const ref::SurfaceDesc* s;
+  Expected want = {};
 };
 Expected expected(const Item& it) {
   Expected e;
@@ -79,14 +76,12 @@ Expected expected(const Item& it) {
   return e;
 }
 
-bool fits3(const ref::IVec3& v, int w) {
-  return fixed::fits_signed(v.x, w) && fixed::fits_signed(v.y, w) && fixed::fits_signed(v.z, w);
-}
+using sim::fits_signed3;
 // The item's inputs must be representable on the ports (every scene-derived value is).
 bool fits_ports(const Item& it) {
   const ref::SurfaceDesc& s = *it.s;
-  bool ok = fits3(it.eye, CW) && fits3(it.vhat, DirW) && fits3(s.bound.c0, CW) &&
-            fits3(s.origin, CW) && s.bound.R2 >= 0 &&
+  bool ok = fits_signed3(it.eye, CW) && fits_signed3(it.vhat, DirW) &&
+            fits_signed3(s.bound.c0, CW) && fits_signed3(s.origin, CW) && s.bound.R2 >= 0 &&
             fixed::fits_unsigned(static_cast<u128>(s.bound.R2), R2W) && s.to_local_s >= 0 &&
             s.to_local_s < (1 << kShW) && fixed::fits_signed(s.y_min, LW) &&
             fixed::fits_signed(s.y_max, LW) && s.end_angle < (std::uint64_t{1} << AW) &&
@@ -151,18 +146,7 @@ int main(int argc, char** argv) {
   const auto add_ray = [&](Source src, int si, int i, int j, const ref::IVec3& eye,
                            const ref::IVec3& vhat, const ref::SurfaceDesc* d) {
     if (vhat.x == 0 && vhat.y == 0 && vhat.z == 0) return;
-    for (int piece = 0; piece < 3; ++piece) {
-      Item it;
-      it.src = src;
-      it.surf = si;
-      it.i = i;
-      it.j = j;
-      it.piece = piece;
-      it.eye = eye;
-      it.vhat = vhat;
-      it.s = d;
-      items.push_back(it);
-    }
+    for (int piece = 0; piece < 3; ++piece) items.push_back({src, si, i, j, piece, eye, vhat, d});
     if (rng() % 16 == 0) {  // piece 3: never valid
       items.push_back(items.back());
       items.back().piece = 3;
@@ -264,7 +248,7 @@ int main(int argc, char** argv) {
                Vec3{0, kind == 3 ? off * 8.0 : 0.0, 0};
         }
         const ref::IVec3 eye = world(le);
-        if (!fits3(eye, CW)) continue;
+        if (!fits_signed3(eye, CW)) continue;
         // World direction of the local one (exact in-plane for the unrotated scenes when the
         // target is rounded the same way).
         const Vec3 wdir = to_vec(world(lt)) - to_vec(eye);
@@ -283,7 +267,7 @@ int main(int argc, char** argv) {
         const bool at_end = n % 2 == 1;
         eye.x = at_end ? d->origin.x - 1 - static_cast<i64>(rng() % 20)
                        : d->origin.x + static_cast<i64>(rng() % 2);
-        if (length(to_vec(eye) - c0) > 0.9 * R || !fits3(eye, CW)) continue;
+        if (length(to_vec(eye) - c0) > 0.9 * R || !fits_signed3(eye, CW)) continue;
         ref::IVec3 vhat = quantise_dir(random_unit(rng));
         if (!at_end) {
           vhat.x = -std::abs(vhat.x) - 1;
@@ -411,7 +395,6 @@ int main(int argc, char** argv) {
   };
   st.latency = ref::surface_setup_latency(kP);
   st.tag_w = TAG_W;
-  tb.reset();
   if (!tb.run(items, st)) return 1;
   long valid_pieces = 0;
   for (const Item& it : items) valid_pieces += it.want.o.valid;

@@ -27,10 +27,6 @@
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, DirW = kP.dir_w(), LW = kP.surf_w, MW = kP.surf_mant_w();
 const int KF = kP.surf_const_frac(), AW = kP.angle_w, EdgeW = kP.edge_w();
@@ -80,13 +76,8 @@ int main(int argc, char** argv) {
       }
       const ref::SurfaceDesc& d = *dp;
       for (int piece : sim::piece_indices(d, rng)) {
-        Item it;
-        it.surf = r.surf;
-        it.ray = r;
-        it.piece = piece;
-        it.d = &d;
-        it.want = ref::process_surface_piece(kP, b.cam, r.vhat, d, piece);
-        b.items.push_back(it);
+        b.items.push_back(
+            {r.surf, r, piece, &d, ref::process_surface_piece(kP, b.cam, r.vhat, d, piece)});
       }
     }
   };

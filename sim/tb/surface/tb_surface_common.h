@@ -62,27 +62,6 @@ struct SurfRay {
   ref::IVec3 eye, vhat;
 };
 
-inline Vec3 to_vec(const ref::IVec3& v) {
-  return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
-}
-inline ref::IVec3 round3(const Vec3& v) {
-  return {std::llround(v.x), std::llround(v.y), std::llround(v.z)};
-}
-inline Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g(0.0, 1.0);
-  Vec3 u;
-  do u = {g(rng), g(rng), g(rng)};
-  while (length(u) < 1e-6);
-  return normalize(u);
-}
-// A direction quantised as the ray generator's v̂ (Q(2.FV)); zero for a zero vector.
-inline ref::IVec3 quantise_dir(const ref::HwParams& p, const Vec3& d) {
-  if (length(d) < 1e-12) return {};
-  const Vec3 u = normalize(d);
-  return {std::llround(std::ldexp(u.x, p.dir_frac)), std::llround(std::ldexp(u.y, p.dir_frac)),
-          std::llround(std::ldexp(u.z, p.dir_frac))};
-}
-
 // Rays of one surface from its scene's camera eye: `count` of them, about 45 % camera pixels at
 // or beside the projection of a random point of the surface, 10 % any pixel, 10 % image-border
 // pixels, 15 % grazing the bounding sphere (impact parameter R·(1 + ε), |ε| down to 2^-24), 20 %

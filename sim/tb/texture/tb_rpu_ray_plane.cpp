@@ -17,10 +17,6 @@
 #include "Vrpu_ray_plane.h"
 #include "tb_base.h"
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr int kCw = COORD_W, kFv = DIR_FRAC;
 constexpr int kDirW = kFv + 2;
 constexpr int kEdgeW = ref::HwParams::kEdgeInt + EDGE_FRAC + ref::HwParams::kRayGuard;
@@ -180,11 +176,10 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::ray_plane_latency(p);
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(items, s)) return 1;
-  return tb.pass("CoordW=%d DirFrac=%d EdgeFrac=%d latency %ld; %ld ellipse6 all pixels, %ld "
-                 "airfield random, %ld constructed cameras, %ld random port vectors; %ld valid, %ld "
-                 "rejected by sign, %ld by the quotient, %ld by the range; %ld with v̂_z = 0",
-                 kCw, kFv, EDGE_FRAC, s.latency, n_ellipse, n_air, n_built, n_random, n_valid,
-                 n_sign, n_quot, n_range, n_parallel);
+  return tb.check(items, s,
+                  "CoordW=%d DirFrac=%d EdgeFrac=%d latency %ld; %ld ellipse6 all pixels, %ld "
+                  "airfield random, %ld constructed cameras, %ld random port vectors; %ld valid, "
+                  "%ld rejected by sign, %ld by the quotient, %ld by the range; %ld with v̂_z = 0",
+                  kCw, kFv, EDGE_FRAC, s.latency, n_ellipse, n_air, n_built, n_random, n_valid,
+                  n_sign, n_quot, n_range, n_parallel);
 }

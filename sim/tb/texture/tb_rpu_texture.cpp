@@ -29,10 +29,6 @@
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr int kCw = COORD_W, kFt = T_FRAC;
 constexpr int kTw = kFt + 3, kDw = kCw + 1, kUw = UNIT_FRAC + 2, kHw = kCw + 5;
 constexpr int kL2w = 2 * kCw + 3, kXw = kCw + 3, kW02w = 2 * kCw + 1, kInvW = INV_W;
@@ -289,7 +285,6 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::texture_latency(p);
   s.tag_w = TAG_W;
-  tb.reset();
   if (!tb.run(items, s)) return 1;
   std::printf("  scenes: %ld ellipse6, %ld polyline9, %ld airfield; segments: %ld grid, %ld grid "
               "neighbour, %ld random; %ld random p0 (%ld with z), %ld descriptor edges, %ld exact "

@@ -28,10 +28,6 @@
 
 namespace {
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr int kFv = DIR_FRAC, kFe = EDGE_FRAC, kIdxW = IDX_W;
 constexpr int kGuard = ref::HwParams::kRayGuard;
 constexpr int kVgW = ref::HwParams::kDirInt + kFv + kGuard;   // v0, dx, dy
@@ -190,9 +186,8 @@ int main(int argc, char** argv) {
   };
   s.latency = ref::ray_gen_latency(params, kIdxW);
   s.tag_w = TAG_W;
-  tb.reset();
-  if (!tb.run(pixels, s)) return 1;
-  return tb.pass("DirFrac=%d EdgeFrac=%d IdxW=%d latency %ld; 8 corners, %ld curve12 all pixels, "
-                 "%ld airfield random, %ld mixed random, %ld synthetic cameras, %ld with v.v = k^2-1",
-                 kFv, kFe, kIdxW, s.latency, n_curve, n_air, n_mixed, made, made_sq);
+  return tb.check(pixels, s,
+                  "DirFrac=%d EdgeFrac=%d IdxW=%d latency %ld; 8 corners, %ld curve12 all pixels, "
+                  "%ld airfield random, %ld mixed random, %ld synthetic cameras, %ld with v.v = "
+                  "k^2-1", kFv, kFe, kIdxW, s.latency, n_curve, n_air, n_mixed, made, made_sq);
 }

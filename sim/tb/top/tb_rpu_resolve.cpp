@@ -24,10 +24,6 @@
 #define PRIM_W 16
 #endif
 
-using namespace rpu;
-using sim::i128;
-using sim::u128;
-
 constexpr int kPixW = PIX_W, kDepthW = DEPTH_W, kPrimW = PRIM_W;
 static_assert(kPrimW <= 31, "the twin's primitive id is an int32");
 
@@ -161,7 +157,6 @@ int main(int argc, char** argv) {
   tb.top().ready_i = 0;
   tb.top().last_i = 0;
   tb.top().hit_i = 0;
-  tb.reset();
   if (!tb.run(items, s)) return 1;
   return tb.pass("pixel results: PixW %d, DepthW %d, PrimW %d; %ld pixels drawn, %ld without work "
                  "items; %ld work items, %ld hits, %ld depth ties, %ld depth+id ties, %ld pixels "

@@ -18,8 +18,6 @@
 #include "tb_base.h"
 #include "top_ports.h"
 
-using namespace rpu;
-
 namespace {
 
 // `count` copies of the frame's items, each its own pixel (so the pixel stream is checked too).
