@@ -11,19 +11,13 @@
 namespace rpu::app {
 
 nlohmann::json hw_params_json(const ref::HwParams& p) {
-  return {{"n", p.n},
-          {"n1", p.n1},
-          {"coord_w", p.coord_w},
-          {"dir_frac", p.dir_frac},
-          {"t_frac", p.t_frac},
-          {"unit_frac", p.unit_frac},
-          {"edge_frac", p.edge_frac},
-          {"inv_w", p.inv_w},
-          {"sqrt_w", p.sqrt_w},
-          {"surf_w", p.surf_w},
-          {"angle_w", p.angle_w},
-          {"metric", p.metric == ref::Metric::kAbs ? "abs" : "squared"},
-          {"ip", p.unrolled ? "unrolled" : "iterative"}};
+  nlohmann::json j = nlohmann::json::object();
+  for (const ref::HwParamInfo& d : ref::hw_param_table()) {
+    const int v = d.get(p);
+    if (d.kind == ref::HwParamKind::kChoice) j[std::string(d.key)] = d.text(v);
+    else j[std::string(d.key)] = v;
+  }
+  return j;
 }
 
 bool rtl_built() { return RPU_HAVE_RTL != 0; }

@@ -49,8 +49,9 @@ inline const std::vector<std::string>& backend_names() {
   return names;
 }
 
-// The hardware parameters as a JSON object ({"n": 16, ..., "metric": "abs", "ip": "unrolled"}),
-// for reports and sweep results.
+// The hardware parameters as a JSON object, one key per entry of the parameter table
+// ({"n": 16, ..., "metric": "abs", "ip": "unrolled", ...}), for reports (metrics.json "config")
+// and sweep results; read back by hw_params_from_json (sweep_spec.h).
 nlohmann::json hw_params_json(const ref::HwParams& p);
 
 // True when this program contains the RTL co-simulation.

@@ -18,6 +18,7 @@
 #include "common/error.h"
 #include "common/limits.h"
 #include "demo.h"
+#include "hw_flags.h"
 #include "sweep.h"
 #include "image/image_io.h"
 #include "common/output_file.h"
@@ -42,9 +43,7 @@ int rtl_fault_code(const std::string& name) {
 
 // Hardware parameters and render switches shared by every subcommand.
 struct CommonFlags {
-  ref::HwParams hw;
-  std::string metric = "abs";
-  std::string ip_mode = "unrolled";
+  app::HwFlags hw;           // --n ... --angle-w: one flag per entry of ref/model/hw_params.def
   long long threads = 0;    // checked by validate() before use
   bool no_binning = false;
   bool no_grid = false;
@@ -62,31 +61,7 @@ struct CommonFlags {
   int patch_iterations = patch::RefineOptions{}.max_iterations;
 
   void add_to(CLI::App& app) {
-    app.add_option("--n", hw.n, "result bits of the iterative process (K = n/n1 steps)")
-        ->capture_default_str();
-    app.add_option("--n1", hw.n1, "bits resolved per step: 2^n1 sub-intervals, 2^n1 + 1 candidate points")
-        ->capture_default_str();
-    app.add_option("--coord-w", hw.coord_w, "signed width of positions (LSB = 1 unit)")
-        ->capture_default_str();
-    app.add_option("--dir-frac", hw.dir_frac, "fraction bits of the ray direction")
-        ->capture_default_str();
-    app.add_option("--t-frac", hw.t_frac, "fraction bits of the chord parameter t")
-        ->capture_default_str();
-    app.add_option("--unit-frac", hw.unit_frac, "fraction bits of the guide unit vectors")
-        ->capture_default_str();
-    app.add_option("--edge-frac", hw.edge_frac, "fraction bits of the PVP edge vectors")
-        ->capture_default_str();
-    app.add_option("--inv-w", hw.inv_w, "mantissa bits of 1/L^2")->capture_default_str();
-    app.add_option("--sqrt-w", hw.sqrt_w, "widest square-root radicand (0 = exact)")
-        ->capture_default_str();
-    app.add_option("--surf-w", hw.surf_w, "surfaces: signed width of local coordinates")
-        ->capture_default_str();
-    app.add_option("--angle-w", hw.angle_w, "surfaces: bits of a binary angle (one turn)")
-        ->capture_default_str();
-    app.add_option("--metric", metric, "distance metric: abs (|d|, the seed's) or squared")
-        ->capture_default_str();
-    app.add_option("--ip", ip_mode, "K-step process: unrolled (one pair per cycle) or iterative")
-        ->capture_default_str();
+    hw.add_to(app);
     app.add_option("--threads", threads, "worker threads (0 = all cores)")->capture_default_str();
     app.add_flag("--no-binning", no_binning, "test every curve segment on every pixel");
     app.add_flag("--no-grid", no_grid, "test every texture segment on every pixel");
@@ -194,17 +169,7 @@ struct CommonFlags {
     }
     return o;
   }
-  ref::HwParams params() const {
-    ref::HwParams p = hw;
-    if (metric == "abs") p.metric = ref::Metric::kAbs;
-    else if (metric == "squared") p.metric = ref::Metric::kSquared;
-    else throw Error("--metric", "must be abs or squared, got '" + metric + "'");
-    if (ip_mode == "unrolled") p.unrolled = true;
-    else if (ip_mode == "iterative") p.unrolled = false;
-    else throw Error("--ip", "must be unrolled or iterative, got '" + ip_mode + "'");
-    p.validate();
-    return p;
-  }
+  ref::HwParams params() const { return hw.params(); }
   tracer::FloatOptions float_options() const {
     const ref::HwParams p = params();
     tracer::FloatOptions o;
@@ -338,6 +303,18 @@ int print_config(const CommonFlags& flags) {
   return 0;
 }
 
+// `rpu config --markdown[=readme]`: the docs' parameter tables, generated from the parameter table
+// (the CTest docs_params compares them with docs/fixed-point.md and README.md).
+int print_markdown(const CLI::App& cmd, const CommonFlags& flags, const std::string& which) {
+  const std::vector<std::string> given = flags.hw.given(cmd);
+  if (!given.empty())
+    throw Error(given.front(), "does not apply to rpu config --markdown: the tables show the defaults");
+  if (which == "docs") std::cout << ref::hw_params_markdown();
+  else if (which == "readme") std::cout << ref::hw_params_readme_rows();
+  else throw Error("--markdown", "must be docs (the default) or readme, got '" + which + "'");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -366,6 +343,11 @@ int main(int argc, char** argv) {
 
   auto* config_cmd = app.add_subcommand("config", "print the effective parameter set");
   flags.add_to(*config_cmd);
+  std::string markdown;
+  config_cmd->add_flag("--markdown{docs}", markdown,
+                       "print the parameter table of docs/fixed-point.md instead (generated from "
+                       "ref/model/hw_params.def), or with --markdown=readme its rows of the "
+                       "README's table");
 
   auto* demo_cmd = app.add_subcommand(
       "demo", "rpu compare on every built-in scene: every backend, the RTL checked, index.html");
@@ -436,6 +418,7 @@ int main(int argc, char** argv) {
                     "--rtl-fault", "--patch-method", "--patch-map-size", "--patch-map-full",
                     "--patch-start", "--patch-tolerance", "--patch-iterations"},
                    "it prints the parameter set and renders nothing");
+      if (!markdown.empty()) return print_markdown(*config_cmd, flags, markdown);
       return print_config(flags);
     }
     if (compare_cmd->parsed()) {

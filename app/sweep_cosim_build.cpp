@@ -8,6 +8,7 @@
 #include "sweep_process.h"
 #if RPU_HAVE_RTL
 #include "rtl_backend.h"
+#include "stream_file.h"
 #include "top_ports.h"
 #endif
 
@@ -18,13 +19,19 @@ namespace fs = std::filesystem;
 #if RPU_HAVE_RTL
 namespace {
 
-std::string cosim_name(const SweepConfig& c) { return "c" + c.id; }
+// The executable of a configuration; the job-file format is part of its name, so that
+// executables built by an earlier rpu that wrote another format are not reused.
+std::string cosim_name(const SweepConfig& c) {
+  return fmt::format("c{}_j{}", c.id, sim::kJobFileVersion);
+}
 
-// "N=16,N1=2,..." for RPU_COSIM_CONFIGS.
+// "N=16,N1=2,..." for RPU_COSIM_CONFIGS: every parameter of the table that has a Verilog name
+// (sim/harness/CMakeLists.txt passes rpu_top those it declares).
 std::string verilog_params(const SweepConfig& c) {
   std::string out;
-  for (const SweepParam& p : kSweepParams)
-    out += fmt::format("{}{}={}", out.empty() ? "" : ",", p.verilog, verilog_value(p, c.params_json));
+  for (const ref::HwParamInfo& d : ref::hw_param_table())
+    if (!d.verilog.empty())
+      out += fmt::format("{}{}={}", out.empty() ? "" : ",", d.verilog, verilog_value(d, c.params));
   return out;
 }
 

@@ -82,7 +82,7 @@ int merge_results(const SweepSpec& s, const std::vector<SweepConfig>& configs,
     rows.push_back(row);
   }
   std::vector<std::string> cols = {"config_id", "status"};
-  for (const SweepParam& p : kSweepParams) cols.push_back(p.key);
+  for (const ref::HwParamInfo& d : ref::hw_param_table()) cols.emplace_back(d.key);
   for (const char* c : {"K", "pixels_total", "ref_vs_float_ip_total", "ref_vs_float_total",
                         "rtl_status", "rtl_cycles", "rtl_latency_cycles", "rtl_items",
                         "rtl_items_per_cycle", "yosys_status", "yosys_module", "yosys_basis",

@@ -12,9 +12,23 @@
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "model/hw_params.h"
 #include "report_text.h"
 
 namespace rpu::app {
+
+const std::vector<std::string_view>& sweep_parameters() {
+  static const std::vector<std::string_view> keys = [] {
+    std::vector<std::string_view> k;
+    for (const ref::HwParamInfo& d : ref::hw_param_table()) {
+      k.push_back(d.key);
+      if (d.id == ref::HwParamId::n1) k.push_back("K");
+    }
+    return k;
+  }();
+  return keys;
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -383,7 +397,7 @@ std::string svg_figure(const Figure& figure) {
 // The parameters whose values differ between ok rows (missing counts as a value).
 std::vector<std::string_view> varying_parameters(const std::vector<const json*>& rows) {
   std::vector<std::string_view> varying;
-  for (std::string_view p : kSweepParameters) {
+  for (std::string_view p : sweep_parameters()) {
     std::optional<json> first;
     for (const json* row : rows) {
       if (!is_ok(*row)) continue;
@@ -417,7 +431,7 @@ Figure line_figure(const std::vector<const json*>& rows, std::string_view x_key,
                    Figure figure, bool y_from_zero) {
   const std::vector<std::string_view> varying = varying_parameters(rows);
   std::vector<std::string_view> key_params;
-  for (std::string_view p : kSweepParameters) {
+  for (std::string_view p : sweep_parameters()) {
     const bool wanted = std::find(by.begin(), by.end(), p) != by.end() ||
                         std::find(varying.begin(), varying.end(), p) != varying.end();
     // K = n/n1 is derived: it varies along the n1 axis without making a series of its own.
@@ -552,7 +566,7 @@ constexpr std::string_view kMeasurements[] = {
 
 std::string results_table(const std::vector<const json*>& rows, const std::vector<Candidate>& front) {
   std::string html = "<div class=\"wide\"><table>\n<tr><th>config_id</th><th>status</th>";
-  for (std::string_view p : kSweepParameters) html += fmt::format("<th>{}</th>", p);
+  for (std::string_view p : sweep_parameters()) html += fmt::format("<th>{}</th>", p);
   for (std::string_view m : kMeasurements) html += fmt::format("<th>{}</th>", m);
   html += "<th>scenes (ref vs float-ip / ref vs float of pixels)</th><th>error</th></tr>\n";
   for (size_t r = 0; r < rows.size(); ++r) {
@@ -561,7 +575,7 @@ std::string results_table(const std::vector<const json*>& rows, const std::vecto
                                       [&](const Candidate& c) { return c.row == r; });
     html += fmt::format("<tr class=\"{}{}\"><td>{}</td><td>{}</td>", status_class(row),
                         on_front ? " pareto" : "", escape_html(row_id(row, r)), cell(field(row, "status")));
-    for (std::string_view p : kSweepParameters)
+    for (std::string_view p : sweep_parameters())
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, p)));
     for (std::string_view m : kMeasurements)
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, m)));
@@ -578,13 +592,13 @@ std::string pareto_table(const std::vector<const json*>& rows, const std::vector
   if (front.empty())
     return "<p>No ok configuration has both LUTs and ref_vs_float_total, so there is no front.</p>\n";
   std::string html = "<table>\n<tr><th>config_id</th>";
-  for (std::string_view p : kSweepParameters) html += fmt::format("<th>{}</th>", p);
+  for (std::string_view p : sweep_parameters()) html += fmt::format("<th>{}</th>", p);
   html += "<th>LUTs</th><th>ref vs float mismatched pixels</th><th>ref vs float-ip mismatched "
           "pixels</th><th>latency (cycles)</th></tr>\n";
   for (const Candidate& c : front) {
     const json& row = *rows[c.row];
     html += fmt::format("<tr><td>{}</td>", escape_html(c.id));
-    for (std::string_view p : kSweepParameters)
+    for (std::string_view p : sweep_parameters())
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, p)));
     for (std::string_view m : {"lut", "ref_vs_float_total", "ref_vs_float_ip_total", "rtl_latency_cycles"})
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, m)));

@@ -24,11 +24,10 @@ namespace rpu::app {
 // Any numeric field may be null or missing (not measured); a row whose status is not "ok" has only
 // its parameters and error. Only "ok" rows are plotted; non-finite numbers count as missing.
 
-// The hardware parameters of a row, in table order. A plot's line is the set of ok rows that agree
-// on every parameter except the plot's x parameter, among the parameters that vary in the sweep.
-inline constexpr std::string_view kSweepParameters[] = {
-    "n", "n1", "K", "coord_w", "dir_frac", "t_frac", "unit_frac", "edge_frac", "inv_w", "sqrt_w",
-    "metric", "ip"};
+// The hardware parameters of a row: the keys of the parameter table (ref/model/hw_params.def) in
+// its order, with the derived K after n1. A plot's line is the set of ok rows that agree on every
+// parameter except the plot's x parameter, among the parameters that vary in the sweep.
+const std::vector<std::string_view>& sweep_parameters();
 
 // The files write_sweep_report writes into out_dir.
 inline constexpr std::string_view kAccuracyVsLutsSvg = "accuracy_vs_luts.svg";
@@ -48,7 +47,7 @@ struct SweepPlots {
 //     labelled "n/n1" (+ " iterative"); the Pareto front (pareto_front) drawn as a highlighted
 //     line through its points in LUT order.
 //   luts_latency_vs_n1.svg: two panels over a shared n1 axis, LUTs and rtl_latency_cycles; one
-//     line per n (split further when other parameters vary too, see kSweepParameters).
+//     line per n (split further when other parameters vary too, see sweep_parameters).
 //   mismatches_vs_coord_w.svg: two panels over a shared coord_w axis and a shared y axis,
 //     ref_vs_float_total and ref_vs_float_ip_total; one line per (n, n1) (split likewise).
 //   index.html: the plots written, the Pareto configurations, and the full results table

@@ -83,32 +83,16 @@ std::pair<int, int> read_size(const json& v, const std::string& where) {
 // Sets one parameter from a JSON value; `where` names it for errors. Values outside int are
 // refused here; HwParams::validate judges the rest per configuration.
 void set_param(ref::HwParams& p, const std::string& key, const json& v, const std::string& where) {
-  if (key == "metric" || key == "ip") {
+  const ref::HwParamInfo* d = ref::find_hw_param_key(key);
+  if (!d) throw Error(where, "unknown hardware parameter (" + ref::hw_param_keys() + ")");
+  if (d->kind == ref::HwParamKind::kChoice) {
     if (!v.is_string()) throw Error(where, "must be a string, got " + describe(v));
-    const std::string s = v.get<std::string>();
-    if (key == "metric") {
-      if (s != "abs" && s != "squared") throw Error(where, "must be abs or squared");
-      p.metric = s == "abs" ? ref::Metric::kAbs : ref::Metric::kSquared;
-    } else {
-      if (s != "unrolled" && s != "iterative") throw Error(where, "must be unrolled or iterative");
-      p.unrolled = s == "unrolled";
-    }
+    const ref::HwChoice* c = d->choice(v.get<std::string>());
+    if (!c) throw Error(where, "must be " + d->choice_list());
+    d->set(p, c->value);
     return;
   }
-  int* field = key == "n"           ? &p.n
-               : key == "n1"        ? &p.n1
-               : key == "coord_w"   ? &p.coord_w
-               : key == "dir_frac"  ? &p.dir_frac
-               : key == "t_frac"    ? &p.t_frac
-               : key == "unit_frac" ? &p.unit_frac
-               : key == "edge_frac" ? &p.edge_frac
-               : key == "inv_w"     ? &p.inv_w
-               : key == "sqrt_w"    ? &p.sqrt_w
-                                    : nullptr;
-  if (!field)
-    throw Error(where, "unknown hardware parameter (n, n1, coord_w, dir_frac, t_frac, unit_frac, "
-                       "edge_frac, inv_w, sqrt_w, metric, ip)");
-  *field = static_cast<int>(read_int(v, where, INT_MIN, INT_MAX));
+  d->set(p, static_cast<int>(read_int(v, where, INT_MIN, INT_MAX)));
 }
 
 std::vector<SweepScene> read_scenes(const json& j, const std::string& file) {
@@ -181,10 +165,8 @@ void read_grid(const json& g, const std::string& file, SweepSpec& s) {
   }
   for (const auto& [k, v] : g.items()) {
     const std::string wk = where + "." + k;
-    if (std::none_of(std::begin(kSweepParams), std::end(kSweepParams),
-                     [&key = k](const SweepParam& p) { return key == p.key; }))
-      throw Error(wk, "unknown hardware parameter (n, n1, coord_w, dir_frac, t_frac, unit_frac, "
-                      "edge_frac, inv_w, sqrt_w, metric, ip)");
+    if (!ref::find_hw_param_key(k))
+      throw Error(wk, "unknown hardware parameter (" + ref::hw_param_keys() + ")");
     std::vector<json> values = v.is_array() ? v.get<std::vector<json>>() : std::vector<json>{v};
     if (values.empty()) throw Error(wk, "must not be empty");
     std::map<std::string, size_t> seen;  // value text → first index
@@ -252,11 +234,15 @@ void read_yosys(const json& y, const std::string& file, SweepSpec& s) {
 
 }  // namespace
 
-std::string verilog_value(const SweepParam& p, const json& params) {
-  const json& v = params[p.key];
-  if (!v.is_string()) return v.dump();
-  if (p.key == std::string("ip")) return v == "unrolled" ? "1" : "0";
-  return v == "abs" ? "0" : "1";
+std::string verilog_value(const ref::HwParamInfo& d, const ref::HwParams& p) {
+  return std::to_string(d.get(p));
+}
+
+ref::HwParams hw_params_from_json(const json& object, const std::string& where) {
+  if (!object.is_object()) throw Error(where, "must be an object");
+  ref::HwParams p;
+  for (const auto& [k, v] : object.items()) set_param(p, k, v, where.empty() ? k : where + "." + k);
+  return p;
 }
 
 std::string hash_hex(const std::string& bytes) {
@@ -289,10 +275,7 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& path) {
     throw Error(at(path, "description"), "must be a string");
   if (j.contains("resolution"))
     std::tie(s.width, s.height) = read_size(j["resolution"], at(path, "resolution"));
-  if (j.contains("base")) {
-    if (!j["base"].is_object()) throw Error(at(path, "base"), "must be an object");
-    for (const auto& [k, v] : j["base"].items()) set_param(s.base, k, v, at(path, "base." + k));
-  }
+  if (j.contains("base")) s.base = hw_params_from_json(j["base"], at(path, "base"));
   if (!j.contains("grid"))
     throw Error(at(path, "grid"), "must be an object of parameter lists, e.g. {\"n\": [8, 16]}");
   read_grid(j["grid"], path, s);

@@ -16,19 +16,19 @@
 
 namespace rpu::app {
 
-// The hardware parameters a grid may name, in canonical order, with their Verilog names.
-struct SweepParam {
-  const char* key;
-  const char* verilog;
-};
-inline constexpr SweepParam kSweepParams[] = {
-    {"n", "N"},           {"n1", "N1"},           {"coord_w", "CoordW"},  {"dir_frac", "DirFrac"},
-    {"t_frac", "TFrac"},  {"unit_frac", "UnitFrac"}, {"edge_frac", "EdgeFrac"}, {"inv_w", "InvW"},
-    {"sqrt_w", "SqrtW"},  {"metric", "Metric"},     {"ip", "Unrolled"}};
+// A grid or "base" names hardware parameters by their keys in the parameter table
+// (ref/model/hw_params.def: n, n1, ..., metric, ip, surf_w, angle_w); results list them in the
+// table's order.
 
-// A parameter's Verilog value in a row's parameters: integers as they are, metric abs/squared
-// 0/1, ip unrolled 1.
-std::string verilog_value(const SweepParam& p, const nlohmann::json& params);
+// A parameter's Verilog value (the -G of a Verilated build, Yosys's chparam): the member as an
+// integer (metric abs 0 / squared 1, ip unrolled 1 / iterative 0).
+std::string verilog_value(const ref::HwParamInfo& d, const ref::HwParams& p);
+
+// An object of hardware parameters by key over the defaults: a sweep file's "base", or the
+// "config" of metrics.json (hw_params_json). Values outside int are refused, and so are unknown
+// keys, wrong types and unknown choice names, each naming "<where>.<key>"; HwParams::validate
+// is the caller's.
+ref::HwParams hw_params_from_json(const nlohmann::json& object, const std::string& where);
 
 // One scene of the sweep.
 struct SweepScene {

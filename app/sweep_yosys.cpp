@@ -107,11 +107,13 @@ void YosysRunner::measure(const SweepConfig& c, json& row) {
   row["yosys_module"] = module;
   std::vector<std::string> overrides;
   std::string key = module;
-  for (const SweepParam& p : kSweepParams) {
-    if (std::find(declared_.begin(), declared_.end(), p.verilog) == declared_.end()) continue;
-    const std::string value = verilog_value(p, c.params_json);
-    overrides.push_back(fmt::format("{}:{}={}", module, p.verilog, value));
-    key += fmt::format(" {}={}", p.verilog, value);
+  for (const ref::HwParamInfo& d : ref::hw_param_table()) {
+    if (d.verilog.empty() ||
+        std::find(declared_.begin(), declared_.end(), d.verilog) == declared_.end())
+      continue;
+    const std::string value = verilog_value(d, c.params);
+    overrides.push_back(fmt::format("{}:{}={}", module, d.verilog, value));
+    key += fmt::format(" {}={}", d.verilog, value);
   }
   const fs::path dir = cache_ / (module + "-" + hash_hex(key));
   const fs::path csv = dir / "row.csv";

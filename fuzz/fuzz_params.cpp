@@ -1,5 +1,6 @@
 // fuzz_params (issue 14, item 3): the hardware parameters as `rpu render`/`rpu config` take them
-// (--n, --n1, --coord-w, ..., --surf-w, --angle-w): every field drawn from the bytes, validated
+// (--n, --n1, --coord-w, ..., --surf-w, --angle-w): every entry of the parameter table
+// (ref/model/hw_params.def) drawn from the bytes, a little beyond its range, validated
 // (HwParams::validate, tracer::check_ip_parameters), and every accepted set renders a built-in
 // scene (its camera cut to at most 8×8 pixels) with the bit-accurate model.
 //
@@ -27,8 +28,15 @@ namespace {
 
 constexpr int kMaxSide = 8;
 
-// A width near [lo, hi] (a little beyond, so both ends of validate() are exercised).
-int width(FuzzedDataProvider& in, int lo, int hi) { return in.ConsumeIntegralInRange<int>(lo - 2, hi + 2); }
+// A value of the entry near its range (a little beyond, so both ends of validate() are
+// exercised): an integer in [min - 2, max + 2], sometimes the entry's off value (sqrt_w 0); a
+// choice's value or one just outside them (an invalid metric must be refused, not rendered).
+int draw(FuzzedDataProvider& in, const rpu::ref::HwParamInfo& d) {
+  using rpu::ref::HwParamKind;
+  if (d.kind == HwParamKind::kChoice) return in.ConsumeIntegralInRange<int>(d.min - 1, d.max + 1);
+  if (d.kind == HwParamKind::kRangeOrOff && in.ConsumeBool()) return d.choices.front().value;
+  return in.ConsumeIntegralInRange<int>(d.min - 2, d.max + 2);
+}
 
 }  // namespace
 
@@ -37,23 +45,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto& scenes = rpu::app::builtin_scenes();
   const auto& builtin = scenes[in.ConsumeIntegralInRange<std::size_t>(0, scenes.size() - 1)];
   rpu::ref::HwParams p;
-  p.n1 = width(in, 1, 8);
-  p.n = p.n1 * in.ConsumeIntegralInRange<int>(0, 41);
-  p.coord_w = width(in, 12, rpu::ref::HwParams::kMaxCoordW);
-  p.dir_frac = width(in, 8, rpu::ref::HwParams::kMaxDirFrac);
-  p.t_frac = width(in, 8, 48);
-  p.unit_frac = width(in, 8, 40);
-  p.edge_frac = width(in, 8, 40);
-  p.inv_w = width(in, 8, 40);
-  p.sqrt_w = in.ConsumeBool() ? 0 : width(in, 16, 126);
-  p.metric = in.ConsumeBool() ? rpu::ref::Metric::kAbs : rpu::ref::Metric::kSquared;
-  p.unrolled = in.ConsumeBool();
-  p.surf_w = width(in, 16, rpu::ref::HwParams::kMaxSurfW);
-  p.angle_w = width(in, 12, 32);
+  for (const rpu::ref::HwParamInfo& d : rpu::ref::hw_param_table()) d.set(p, draw(in, d));
+  // n % n1 == 0 (a combination validate() checks) would refuse most draws: half the time n is
+  // rounded down to a multiple of n1.
+  if (p.n1 > 0 && in.ConsumeBool()) p.n -= p.n % p.n1;
   try {
     p.validate();
     rpu::tracer::check_ip_parameters(p.n, p.n1);
     (void)p.describe();
+    (void)p.summary();
     rpu::scene::Scene scene = rpu::scene::parse_scene(builtin.json, builtin.name);
     if (!scene.patches.empty()) return 0;  // no fixed-point path
     scene.camera.width = std::min(scene.camera.width, kMaxSide);

@@ -51,8 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const rpu::Error& e) {
       check_message(e);
     }
-    for (const rpu::app::SweepParam& p : rpu::app::kSweepParams)
-      (void)rpu::app::verilog_value(p, c.params_json);
+    for (const rpu::ref::HwParamInfo& d : rpu::ref::hw_param_table())
+      (void)rpu::app::verilog_value(d, c.params);
   }
   return 0;
 }

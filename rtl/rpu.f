@@ -11,12 +11,15 @@
 // "// header: FILE" comment (included, never compiled on its own), or a // comment.
 
 +incdir+common
++incdir+curve
 +incdir+surface
++incdir+top
 
 // common: the shared arithmetic blocks
 common/rpu_fifo.v
 common/rpu_mul.v
 // header: common/rpu_mul_latency.vh
+// header: common/rpu_widths.vh
 common/rpu_sqrt.v
 common/rpu_div.v
 common/rpu_cordic.v
@@ -30,6 +33,7 @@ curve/rpu_candidate.v
 curve/rpu_ip_step.v
 curve/rpu_ip.v
 curve/rpu_capture.v
+// header: curve/rpu_guide_desc.vh
 
 // texture: the texture path
 texture/rpu_ray_plane.v
@@ -51,3 +55,6 @@ surface/rpu_surface_admit.v
 top/rpu_ray_gen.v
 top/rpu_resolve.v
 top/rpu_top.v
+// header: top/rpu_cam_desc.vh
+// header: top/rpu_seg_desc.vh
+// header: top/rpu_top_words.vh

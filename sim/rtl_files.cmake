@@ -42,3 +42,7 @@ foreach(f IN LISTS RPU_RTL_SOURCES RPU_RTL_HEADERS RPU_RTL_INCDIRS)
   endif()
 endforeach()
 unset(rpu_rtl_lines)
+# The lint waivers (each scoped to a file and a message, with its reason): every Verilated build
+# passes them, so `-Wall` stays clean without inline pragmas.
+set(RPU_VERILATOR_WAIVER ${RPU_RTL_DIR}/lint/verilator_waiver.vlt)
+list(APPEND RPU_VERILATOR_RTL_ARGS ${RPU_VERILATOR_WAIVER})

@@ -13,6 +13,8 @@
 #                          sweep-directory file the sweep fails naming it)
 #   -DMODE=resume_content  resume reuses results while the scene's bytes are unchanged, and
 #                          recomputes every configuration when they change (same file name)
+#   -DMODE=surface_params  surf_w and angle_w swept on a surface scene: a column each, a row per
+#                          configuration, an invalid combination recorded naming --angle-w
 # Other variables: RPU (the executable), SWEEP (the sweep file), OUT (output directory).
 file(REMOVE_RECURSE ${OUT})
 
@@ -39,9 +41,9 @@ endfunction()
 
 function(expect_columns)
   string(REPLACE "," ";" cols "${header}")
-  foreach(c config_id status n n1 coord_w metric ip K pixels_total ref_vs_float_ip_total
-            ref_vs_float_total rtl_status rtl_cycles rtl_latency_cycles yosys_status lut ff dsp
-            bram longest_path_levels error)
+  foreach(c config_id status n n1 coord_w metric ip surf_w angle_w K pixels_total
+            ref_vs_float_ip_total ref_vs_float_total rtl_status rtl_cycles rtl_latency_cycles
+            yosys_status lut ff dsp bram longest_path_levels error)
     list(FIND cols ${c} at)
     if(at EQUAL -1)
       message(FATAL_ERROR "FAILED: results.csv lacks column ${c}: ${header}")
@@ -153,7 +155,8 @@ elseif(MODE STREQUAL "rtl_build")
     message(FATAL_ERROR "FAILED: no on-demand Verilator build")
   endif()
   read_csv()
-  if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
+  # n, n1, ..., ip, surf_w, angle_w (the table's order), K, the accuracy columns, the RTL's.
+  if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,24,20,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
     message(FATAL_ERROR "FAILED: no co-simulated sample from the on-demand build: ${rows}")
   endif()
 elseif(MODE STREQUAL "csv_header")
@@ -237,6 +240,24 @@ elseif(MODE STREQUAL "resume_content")
   if(NOT err MATCHES "0 done earlier, 2 to run")
     message(FATAL_ERROR "FAILED: results of the old scene content were reused")
   endif()
+elseif(MODE STREQUAL "surface_params")
+  # surf_w and angle_w are grid keys like the others (the table of hardware parameters): both
+  # configurations run on a surface scene, each row with its own surf_w and angle_w, and an
+  # angle_w past surf_w + 10 is an invalid row naming --angle-w.
+  file(WRITE ${OUT}/sweep.json "{\"scenes\": [\"builtin:surf_spiral\"], \"resolution\": [8, 8], \"grid\": {\"surf_w\": [16, 24], \"angle_w\": [16, 32]}, \"rtl\": false}\n")
+  run_rpu(0 sweep ${OUT}/sweep.json --out ${OUT}/out --no-yosys)
+  set(OUT ${OUT}/out)
+  read_csv()
+  if(NOT header MATCHES ",ip,surf_w,angle_w,K,")
+    message(FATAL_ERROR "FAILED: no surf_w, angle_w columns after ip: ${header}")
+  endif()
+  foreach(want "ok,16,2,[^;]*,unrolled,16,16,8," "ok,16,2,[^;]*,unrolled,24,16,8,"
+               "ok,16,2,[^;]*,unrolled,24,32,8,"
+               "invalid,16,2,[^;]*,unrolled,16,32,8,[^;]*--angle-w: angle_w = 32 needs more CORDIC")
+    if(NOT rows MATCHES "(^|;)[0-9a-f]+,${want}")
+      message(FATAL_ERROR "FAILED: no row /${want}/: ${rows}")
+    endif()
+  endforeach()
 else()
   message(FATAL_ERROR "unknown MODE ${MODE}")
 endif()

@@ -1,4 +1,4 @@
-// All unit twins: one C++ twin per hardware unit of the ray-processing unit (ARCHITECTURE.md),
+// All unit twins: one C++ twin per hardware unit of the ray-processing unit (docs/rtl.md),
 // with the RTL module's parameters (HwParams) and ports (its structs). Each twin lives in
 // ref/model/S/<module>.h/.cpp, named after rtl/S/<module>.v and at the path of
 // sim/tb/S/tb_<module>.cpp (S the subsystem: common, curve, texture, surface, top; table:
@@ -17,6 +17,10 @@
 #include "model/curve/rpu_ip_step.h"
 #include "model/curve/rpu_sphere.h"
 #include "model/datapath.h"
+#include "model/surface/rpu_indicator.h"
+#include "model/surface/rpu_surface_ip.h"
+#include "model/surface/rpu_surface_setup.h"
+#include "model/surface/rpu_surface_top.h"
 #include "model/texture/rpu_ray_plane.h"
 #include "model/texture/rpu_texture.h"
 #include "model/top/rpu_ray_gen.h"

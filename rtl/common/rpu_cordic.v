@@ -69,11 +69,9 @@ module rpu_cordic #(
   // slow P output into a carry chain about ChunkA + 17 bits long) then fits 3.5 ns (Yosys sta
   // 3.46 ns at the defaults, 3.80 with 24-bit tiles) for 6 DSP48E1 per product instead of 4.
   localparam integer MulChunkA  = 13;
-  localparam integer MulLatency = rpu_mul_latency(MA, MB, Mode == 0 ? 0 : 1, MulChunkA, 17);
+  localparam integer MulLatency = `RPU_MUL_LATENCY(MA, MB, Mode == 0 ? 0 : 1, MulChunkA, 17);
   // The unit's latency (what the enclosing units count on; the twin's cordic_latency).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = 1 + Iters + MulLatency + 1;
-  /* verilator lint_on UNUSEDPARAM */
 
   initial begin
     if (W < 6 || W > 48) $fatal(1, "rpu_cordic: W must be in 6..48");
@@ -109,20 +107,20 @@ module rpu_cordic #(
   endfunction
 
   // atan(1/m) · 2^70: the same series with x^(2k+1) = floor(2^70 / m^(2k+1)).
-  function [127:0] atan_inv(input [127:0] m);
+  function [127:0] atan_inv(input [127:0] atan_m);
     reg [127:0] t, sum, odd;
     reg         sub;
     begin
       sum = 128'd0;
       odd = 128'd1;
       sub = 1'b0;
-      t   = (128'd1 << AtanFrac) / m;
+      t   = (128'd1 << AtanFrac) / atan_m;
       while (t != 128'd0) begin
         if (sub) sum = sum - t / odd;
         else     sum = sum + t / odd;
         sub = ~sub;
         odd = odd + 128'd2;
-        t   = t / (m * m);
+        t   = t / (atan_m * atan_m);
       end
       atan_inv = sum;
     end
@@ -168,12 +166,12 @@ module rpu_cordic #(
   // GainInv = round(2^KF / K), ties up: K² = Π_{i<n} (1 + 2^−2i) at 62 fraction bits (each
   // step floored), K · 2^62 = isqrt(K² · 2^62). Below 2^KF (1/K < 0.71).
   function [127:0] gain_inv(input integer n);
-    reg [127:0] k2, k, q;
+    reg [127:0] ksq, k, q;
     integer     i;
     begin
-      k2 = 128'd1 << GainFrac;
-      for (i = 0; i < n; i = i + 1) k2 = k2 + (k2 >> (2 * i));
-      k = isqrt(k2 << GainFrac);
+      ksq = 128'd1 << GainFrac;
+      for (i = 0; i < n; i = i + 1) ksq = ksq + (ksq >> (2 * i));
+      k = isqrt(ksq << GainFrac);
       q = ((128'd1 << (GainFrac + KF + 1)) + k) / (k * 128'd2);
       gain_inv = q;
     end

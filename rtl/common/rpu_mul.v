@@ -38,7 +38,7 @@ module rpu_mul #(
   localparam integer NA      = (AW - Signed + ChunkA - 1) / ChunkA;
   localparam integer NB      = (BW - Signed + ChunkB - 1) / ChunkB;
   localparam integer T       = NA * NB;
-  localparam integer Natural = rpu_mul_latency(AW, BW, Signed, ChunkA, ChunkB);
+  localparam integer Natural = `RPU_MUL_LATENCY(AW, BW, Signed, ChunkA, ChunkB);
   localparam integer Levels  = Natural - 2;
   localparam integer Lat     = Latency == 0 ? Natural : Latency;
   localparam integer Extra   = Lat - Natural;
@@ -103,12 +103,13 @@ module rpu_mul #(
         // The tile's weight 2^(ChunkA·ia + ChunkB·ib), the product sign-extended to PW bits
         // (bits at or above PW are dropped: the sums are modulo 2^PW).
         localparam integer Sh = ChunkA * ia + ChunkB * ib;
+        localparam integer KeepW = PW - Sh;  // the product bits below 2^PW after the shift
         wire [PW+TA+TB-1:0] ext = {{PW{tp_q[TA+TB-1]}}, tp_q};
         wire [PW-1:0]       shifted;
         if (Sh >= PW) begin : g_out
           assign shifted = {PW{1'b0}};
         end else begin : g_in
-          assign shifted = {ext[PW-Sh-1:0], {Sh{1'b0}}};
+          assign shifted = {ext[KeepW-1:0], {Sh{1'b0}}};
         end
         assign leaf[ia * NB + ib] = shifted;
         wire unused_ext = ^ext;

@@ -1,17 +1,11 @@
-// rpu_mul's latency for given operand widths, as a constant function: included inside every
-// module that instantiates rpu_mul and must know when its product arrives (one formula for all).
-// Latency = 2 (tile input and product registers) + ceil(log2(tiles)) adder-tree levels.
-// (Verilator sees the function's own result variable as hiding the function when several
-// modules of one hierarchy include this file: a false alarm, waived here only.)
-/* verilator lint_off VARHIDDEN */
-function integer rpu_mul_latency(input integer aw, input integer bw, input integer signed_,
-                                 input integer chunk_a, input integer chunk_b);
-  integer tiles, levels;
-  begin
-    tiles  = ((aw - signed_ + chunk_a - 1) / chunk_a) * ((bw - signed_ + chunk_b - 1) / chunk_b);
-    levels = 0;
-    while ((1 << levels) < tiles) levels = levels + 1;
-    rpu_mul_latency = 2 + levels;
-  end
-endfunction
-/* verilator lint_on VARHIDDEN */
+// rpu_mul's latency for given operand widths: 2 (the tile input and product registers) +
+// ceil(log2(tiles)) adder-tree levels, tiles = ceil((aw − s)/ca) · ceil((bw − s)/cb) for a
+// signed (s = 1) or unsigned (s = 0) product in tiles of ca × cb unsigned bits. One formula for
+// rpu_mul and every module that must know when a product arrives; the C++ side is
+// ref::mul_latency (ref/model/common/rpu_mul.h). Macros rather than a constant function, so that
+// a header included in nested modules declares nothing.
+`define RPU_MUL_LATENCY(aw, bw, s, ca, cb) \
+  (2 + $clog2((((aw) - (s) + (ca) - 1) / (ca)) * (((bw) - (s) + (cb) - 1) / (cb))))
+// At the tile size every datapath product uses (rpu_mul's default chunks, 24 × 17 bits).
+`define RPU_MUL_LAT(aw, bw, s) `RPU_MUL_LATENCY(aw, bw, s, 24, 17)
+

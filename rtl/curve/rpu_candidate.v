@@ -8,6 +8,7 @@
 //   md = isqrt(sat(|pr − X|²)) or sat(|pr − X|²)       by Metric
 // Fixed latency; the candidate's context rides in the sub-units' tags.
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_candidate #(
   parameter integer CoordW   = 24,  // position width (12..40)
@@ -18,15 +19,15 @@ module rpu_candidate #(
   parameter integer Metric   = 0,   // 0: md = |pr − X| (seed), 1: md = |pr − X|²
   parameter integer TagW     = 1,   // side-band bits (>= 1)
   // Derived (do not override).
-  parameter integer TW   = TFrac + 3,           // t, α, β: Q(3.FT)
-  parameter integer DW   = CoordW + 1,          // d, AB
-  parameter integer UW   = UnitFrac + 2,        // u: Q(2.FU)
-  parameter integer HW   = CoordW + 5,          // guide height h
-  parameter integer L2W  = 2 * CoordW + 3,      // L²
-  parameter integer RadW = 2 * CoordW + 10,     // h² (guide_radicand_w)
-  parameter integer XW   = CoordW + 3,          // X
-  parameter integer PrW  = CoordW + 2,          // pr
-  parameter integer Md2W = 2 * CoordW + 8,      // |pr − X|² format (dist_radicand_w)
+  parameter integer TW   = `RPU_TW(TFrac),           // t, α, β: Q(3.FT)
+  parameter integer DW   = `RPU_DW(CoordW),          // d, AB
+  parameter integer UW   = `RPU_UW(UnitFrac),        // u: Q(2.FU)
+  parameter integer HW   = `RPU_HW(CoordW),          // guide height h
+  parameter integer L2W  = `RPU_L2W(CoordW),      // L²
+  parameter integer RadW = `RPU_GRADW(CoordW),     // h² (guide_radicand_w)
+  parameter integer XW   = `RPU_XW(CoordW),          // X
+  parameter integer PrW  = `RPU_PRW(CoordW),          // pr
+  parameter integer Md2W = `RPU_MD2W(CoordW),      // |pr − X|² format (dist_radicand_w)
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : Md2W
 ) (
   input  wire                clk_i,
@@ -61,7 +62,7 @@ module rpu_candidate #(
   output wire                ovf_o,      // some value of this candidate saturated
   output wire [TagW-1:0]     tag_o
 );
-  localparam integer GW = CoordW + 2;  // rpu_guide_pair's g
+  localparam integer GW = `RPU_PRW(CoordW);  // rpu_guide_pair's g
 
   initial begin
     if (Metric != 0 && Metric != 1) $fatal(1, "rpu_candidate: Metric must be 0 or 1");
@@ -71,8 +72,8 @@ module rpu_candidate #(
 `include "rpu_mul_latency.vh"
   // ---- pr(m) and t(m): the products (rpu_mul), then the sums, registered ----
   localparam integer MW   = N + 2;  // m as a signed value
-  localparam integer LatM = rpu_mul_latency(TW, MW, 1, 24, 17) > rpu_mul_latency(DW, MW, 1, 24, 17)
-                          ? rpu_mul_latency(TW, MW, 1, 24, 17) : rpu_mul_latency(DW, MW, 1, 24, 17);
+  localparam integer LatM = `RPU_MUL_LAT(TW, MW, 1) > `RPU_MUL_LAT(DW, MW, 1)
+                          ? `RPU_MUL_LAT(TW, MW, 1) : `RPU_MUL_LAT(DW, MW, 1);
   wire [MW-1:0] m_s = {1'b0, m_i};
   // Everything the guides, the curve point and the end need rides in the t product's tag.
   localparam integer InW = 3*CoordW + TW + 3*CoordW + 3*DW + L2W
@@ -141,6 +142,9 @@ module rpu_candidate #(
   //      later) ride in the guide pair's tag ----
   localparam integer SegW   = 3*CoordW + 3*DW + 6*UW;  // p1, d, u1, u2
   localparam integer G1TagW = SegW + 3*PrW + TW + 1 + TagW;
+  // The guide pair's tag, LSB first: {seg, pr, t, ovf, tag}; seg = {p1, d, u1, u2}.
+  localparam integer GtPrO   = G1TagW - SegW - 3*PrW;
+  localparam integer SegDO   = 6*UW;
   reg [SegW-1:0] seg_q1;
   reg [L2W-1:0]  l2_q1;
   reg [1:0]      mode1_q1, mode2_q1;
@@ -175,9 +179,9 @@ module rpu_candidate #(
     .valid_o(g1_valid), .g1_o(g1), .g2_o(g2), .w_o(w_unused), .ovf_o(g_ovf),
     .tag_o(g1_tag_out));
   wire [SegW-1:0]  seg_g = g1_tag_out[G1TagW-1 -: SegW];
-  wire [3*PrW-1:0] pr_g = g1_tag_out[G1TagW-SegW-1 -: 3*PrW];
+  wire [3*PrW-1:0] pr_g = g1_tag_out[GtPrO +: 3*PrW];
   wire [3*CoordW-1:0] p1_g = seg_g[SegW-1 -: 3*CoordW];
-  wire [3*DW-1:0]     d_g  = seg_g[SegW-3*CoordW-1 -: 3*DW];
+  wire [3*DW-1:0]     d_g  = seg_g[SegDO +: 3*DW];
   wire [3*UW-1:0]     u1_g = seg_g[6*UW-1 -: 3*UW];
   wire [3*UW-1:0]     u2_g = seg_g[3*UW-1:0];
   wire [TW-1:0]    t_g  = g1_tag_out[TW+1+TagW-1 -: TW];
@@ -221,7 +225,7 @@ module rpu_candidate #(
         // cycle is an operand delay inside rpu_mul, so the sum starts from its flip-flops).
         wire v_unused, t_unused;
         rpu_mul #(.AW(DfW), .BW(DfW), .Signed(1), .TagW(1),
-                  .Latency(c == 2 ? rpu_mul_latency(DfW, DfW, 1, 24, 17) + 1 : 0)) u_sq (
+                  .Latency(c == 2 ? `RPU_MUL_LAT(DfW, DfW, 1) + 1 : 0)) u_sq (
           .clk_i, .rst_ni, .valid_i(cp_valid), .a_i(df), .b_i(df), .tag_i(1'b0),
           .valid_o(v_unused), .p_o(sq[c]), .tag_o(t_unused));
         wire unused_sq_ctl = ^{v_unused, t_unused};
@@ -284,7 +288,8 @@ module rpu_candidate #(
         .valid_o(valid_o), .root_o(root), .tag_o(out_tag));
       assign md_o  = root;
       assign x_o   = out_tag[OutTagW-1 -: 3*XW];
-      assign pr_o  = out_tag[OutTagW-3*XW-1 -: 3*PrW];
+      localparam integer OtPrO = OutTagW - 3*XW - 3*PrW;  // {X, pr, t, ovf, tag}
+      assign pr_o  = out_tag[OtPrO +: 3*PrW];
       assign t_o   = out_tag[TW+1+TagW-1 -: TW];
       assign ovf_o = out_tag[TagW];
       assign tag_o = out_tag[TagW-1:0];

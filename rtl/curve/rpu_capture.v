@@ -12,6 +12,7 @@
 //   1        depth > 0, the hit
 // Latency = LatM + 3 cycles (7 at the defaults).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_capture #(
   parameter integer CoordW   = 24,  // position width (12..40)
@@ -19,8 +20,8 @@ module rpu_capture #(
   parameter integer EdgeFrac = 16,  // fraction bits of edge vectors (8..40), plus 14 guard bits
   parameter integer TagW     = 1,   // side-band bits (>= 1)
   // Derived (do not override).
-  parameter integer XW     = CoordW + 3,              // curve point X
-  parameter integer EdgeW  = 4 + EdgeFrac + 14,       // Q(4.FE+14)
+  parameter integer XW     = `RPU_XW(CoordW),              // curve point X
+  parameter integer EdgeW  = `RPU_EGW(EdgeFrac),       // Q(4.FE+14)
   parameter integer DepthW = CoordW + 4 + EdgeW + 2   // q·W
 ) (
   input  wire                clk_i,
@@ -47,11 +48,9 @@ module rpu_capture #(
   localparam integer SW = PW + 2;      // a sum of three
 
 `include "rpu_mul_latency.vh"
-  localparam integer LatM = rpu_mul_latency(EdgeW, QW, 1, 24, 17);
+  localparam integer LatM = `RPU_MUL_LAT(EdgeW, QW, 1);
   // The unit's latency (what the enclosing units count on).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = LatM + 3;
-  /* verilator lint_on UNUSEDPARAM */
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_capture: CoordW must be in 12..40");

@@ -13,6 +13,7 @@
 // Latency = LatM + 3 cycles (7 at the defaults: 19 × 52 bits, three tiles, LatM = 4).
 // No backpressure inside (rpu_top reserves room).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_chord #(
   parameter integer DotW  = 52,  // signed width of the dot product (2..126, DotW + InvW <= 127)
@@ -21,7 +22,7 @@ module rpu_chord #(
   parameter integer ShW   = 7,   // unsigned width of the exponent inv_s (1..8)
   parameter integer TagW  = 1,   // side-band bits carried with each operand (>= 1)
   // Derived (do not override).
-  parameter integer TW = TFrac + 3  // t: Q(3.TFrac)
+  parameter integer TW = `RPU_TW(TFrac)  // t: Q(3.TFrac)
 ) (
   input  wire            clk_i,
   input  wire            rst_ni,
@@ -52,7 +53,7 @@ module rpu_chord #(
   end
 
 `include "rpu_mul_latency.vh"
-  localparam integer LatM = rpu_mul_latency(MW, DotW, 1, 24, 17);
+  localparam integer LatM = `RPU_MUL_LAT(MW, DotW, 1);
   // The unit's latency (what the enclosing units count on; ref::chord_latency).
   localparam integer Latency = LatM + 3;
 

@@ -18,6 +18,7 @@
 // flat, straight) or in (−2^S, 0] (pre-shifted root), |u1·G1 + u2·G2| ≤ 9·2^S + 2: it fits for
 // S ≤ CW − 8, i.e. every SqrtW ≥ 26 or 0 (in practice t stays within a few LSB of [0, 1]).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_curve_point #(
   parameter integer CoordW   = 24,  // CW: signed width of positions (12..40)
@@ -25,11 +26,11 @@ module rpu_curve_point #(
   parameter integer UnitFrac = 16,  // FU: fraction bits of the guide unit vectors (8..40)
   parameter integer TagW     = 1,   // side-band bits carried with each operand (>= 1)
   // Derived (do not override).
-  parameter integer TW = TFrac + 3,     // t: Q(3.FT)
-  parameter integer DW = CoordW + 1,    // d = p2 − p1
-  parameter integer UW = UnitFrac + 2,  // u: Q(2.FU)
-  parameter integer GW = CoordW + 2,    // g1, g2 (rpu_guide_pair's g1_o, g2_o)
-  parameter integer XW = CoordW + 3     // X
+  parameter integer TW = `RPU_TW(TFrac),     // t: Q(3.FT)
+  parameter integer DW = `RPU_DW(CoordW),    // d = p2 − p1
+  parameter integer UW = `RPU_UW(UnitFrac),  // u: Q(2.FU)
+  parameter integer GW = `RPU_PRW(CoordW),    // g1, g2 (rpu_guide_pair's g1_o, g2_o)
+  parameter integer XW = `RPU_XW(CoordW)     // X
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -47,7 +48,7 @@ module rpu_curve_point #(
   output reg  [TagW-1:0]   tag_o
 );
   localparam integer OmW = TW + 1;       // 2^FT − t ∈ (−3, 5]·2^FT
-  localparam integer GkW = CoordW + 5;   // G1 ∈ [−10, 10)·2^CW, G2 ∈ [−8, 8]·2^CW
+  localparam integer GkW = `RPU_HW(CoordW);   // G1 ∈ [−10, 10)·2^CW, G2 ∈ [−8, 8]·2^CW
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_curve_point: CoordW must be in 12..40");
@@ -57,14 +58,12 @@ module rpu_curve_point #(
   end
 
 `include "rpu_mul_latency.vh"
-  localparam integer LatG = rpu_mul_latency(GW, OmW, 1, 24, 17) > rpu_mul_latency(GW, TW, 1, 24, 17)
-                          ? rpu_mul_latency(GW, OmW, 1, 24, 17) : rpu_mul_latency(GW, TW, 1, 24, 17);
-  localparam integer LatU = rpu_mul_latency(UW, GkW, 1, 24, 17);
-  localparam integer LatD = rpu_mul_latency(DW, TW, 1, 24, 17);
+  localparam integer LatG = `RPU_MUL_LAT(GW, OmW, 1) > `RPU_MUL_LAT(GW, TW, 1)
+                          ? `RPU_MUL_LAT(GW, OmW, 1) : `RPU_MUL_LAT(GW, TW, 1);
+  localparam integer LatU = `RPU_MUL_LAT(UW, GkW, 1);
+  localparam integer LatD = `RPU_MUL_LAT(DW, TW, 1);
   // The unit's latency (what the enclosing units count on).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = LatG + LatU + 1;
-  /* verilator lint_on UNUSEDPARAM */
 
   initial begin
     if (LatD > LatG + LatU - 1) $fatal(1, "rpu_curve_point: internal: d·t slower than the guides");

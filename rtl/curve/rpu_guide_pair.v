@@ -20,6 +20,7 @@
 // Over every port value g ∈ (−2^S, 2^(CW+1)) (g ≤ sqrt(floor(L2·w)) < 2^(CW+1/2)), which fits
 // CW+2 signed bits since S ≤ CW−3; within the descriptor formats g ≤ L/2 < 2^CW.
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_guide_pair #(
   parameter integer CoordW = 24,  // CW: signed width of positions (12..40)
@@ -28,13 +29,13 @@ module rpu_guide_pair #(
   parameter integer HhIn   = 0,   // 1: h² comes in on hh1_i/hh2_i; 0: squared here
   parameter integer TagW   = 1,   // side-band bits carried with each operand (>= 1)
   // Derived (do not override).
-  parameter integer TW   = TFrac + 3,       // t: Q(3.FT), signed
+  parameter integer TW   = `RPU_TW(TFrac),       // t: Q(3.FT), signed
   parameter integer WW   = TFrac - 1,       // w ≤ 2^(FT−2): FT−1 bits, unsigned
-  parameter integer HW   = CoordW + 5,      // h ≤ 16·L < 16·√3·2^CW < 2^(CW+5), unsigned
+  parameter integer HW   = `RPU_HW(CoordW),      // h ≤ 16·L < 16·√3·2^CW < 2^(CW+5), unsigned
   parameter integer AW   = CoordW,          // a = L²/(2h) < L/32, unsigned
-  parameter integer L2W  = 2 * CoordW + 3,  // L2 = |d|² ≤ 3·2^(2CW), unsigned
-  parameter integer RadW = 2 * CoordW + 10, // h², the radicand: guide_radicand_w()
-  parameter integer GW   = CoordW + 2       // g, signed (see above)
+  parameter integer L2W  = `RPU_L2W(CoordW),  // L2 = |d|² ≤ 3·2^(2CW), unsigned
+  parameter integer RadW = `RPU_GRADW(CoordW), // h², the radicand: guide_radicand_w()
+  parameter integer GW   = `RPU_PRW(CoordW)       // g, signed (see above)
 ) (
   input  wire                   clk_i,
   input  wire                   rst_ni,
@@ -81,18 +82,16 @@ module rpu_guide_pair #(
   // The multipliers' latencies. The flat path (aw and bw, then aw·bw) and the arc path (lw,
   // then one register for the radicand) meet at the roots: the shorter is padded (rpu_mul's
   // Latency parameter).
-  localparam integer LatW    = rpu_mul_latency(TFrac, TFrac, 0, 24, 17);
-  localparam integer LatLw   = rpu_mul_latency(L2W, WW, 0, 24, 17);
-  localparam integer LatAw   = rpu_mul_latency(AW, WW, 0, 24, 17);
-  localparam integer LatBw   = rpu_mul_latency(TFrac, WW, 0, 24, 17);
-  localparam integer LatAb   = rpu_mul_latency(AwW, WW, 0, 24, 17);
-  localparam integer LatHh   = rpu_mul_latency(HW, HW, 0, 24, 17);
+  localparam integer LatW    = `RPU_MUL_LAT(TFrac, TFrac, 0);
+  localparam integer LatLw   = `RPU_MUL_LAT(L2W, WW, 0);
+  localparam integer LatAw   = `RPU_MUL_LAT(AW, WW, 0);
+  localparam integer LatBw   = `RPU_MUL_LAT(TFrac, WW, 0);
+  localparam integer LatAb   = `RPU_MUL_LAT(AwW, WW, 0);
+  localparam integer LatHh   = `RPU_MUL_LAT(HW, HW, 0);
   localparam integer LatAwBw = LatAw > LatBw ? LatAw : LatBw;
   localparam integer LatProd = (LatAwBw + LatAb > LatLw ? LatAwBw + LatAb : LatLw) + 1;
   // The unit's latency (what the testbenches and the enclosing units count on).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = LatW + LatProd + SqStages + 1;
-  /* verilator lint_on UNUSEDPARAM */
 
   initial begin
     if (HhIn == 0 && LatHh > LatW + LatProd - 1)
@@ -110,7 +109,11 @@ module rpu_guide_pair #(
   // h² (HhIn = 1) likewise.
   localparam integer GIn   = 2 + HW + AW + TFrac;
   localparam integer HhTW  = HhIn != 0 ? 2 * RadW : 1;
-  localparam integer WTagW = TagW + L2W + 2 * GIn + HhTW;
+  // w's tag, LSB first: {tag, L2, guide 1, guide 2, h²}.
+  localparam integer WtG1O  = HhTW + GIn;
+  localparam integer WtL2O  = HhTW + 2 * GIn;
+  localparam integer WtTagO = WtL2O + L2W;
+  localparam integer WTagW  = WtTagO + TagW;
   wire [HhTW-1:0]    hh_in;
   generate
     if (HhIn != 0) begin : g_hh_tag
@@ -128,11 +131,11 @@ module rpu_guide_pair #(
     .valid_o(w_valid), .p_o(ww), .tag_o(w_tag));
   // ww ≤ 2^(2FT−2): bit 2FT−1 is zero; the low FT bits are the floor's dropped fraction.
   wire [WW-1:0]   w      = ww[2*TFrac-2:TFrac];
-  wire [TagW-1:0] tag_w  = w_tag[WTagW-1 -: TagW];
-  wire [L2W-1:0]  l2_w   = w_tag[WTagW-TagW-1 -: L2W];
+  wire [TagW-1:0] tag_w  = w_tag[WtTagO +: TagW];
+  wire [L2W-1:0]  l2_w   = w_tag[WtL2O +: L2W];
   wire [GIn-1:0]  gin_w [0:1];
-  assign gin_w[0] = w_tag[HhTW+2*GIn-1 -: GIn];
-  assign gin_w[1] = w_tag[HhTW+GIn-1 -: GIn];
+  assign gin_w[0] = w_tag[WtG1O +: GIn];
+  assign gin_w[1] = w_tag[HhTW +: GIn];
   wire [HhTW-1:0] hh_w   = w_tag[HhTW-1:0];
 
   // h² with HhIn = 0: squared from the ports beside w, then delayed to the radicand sum.
@@ -140,7 +143,10 @@ module rpu_guide_pair #(
   genvar k;
 
   // ---- lw = floor(L2·w / 2^FT), shared; w, tag, and per guide {mode, h} ride in its tag ----
-  localparam integer LTagW = TagW + WW + 2 * (2 + HW) + HhTW;
+  // lw's tag, LSB first: {tag, w, {mode, h} of guide 1 and 2, h²}.
+  localparam integer LtWO   = HhTW + 2 * (2 + HW);
+  localparam integer LtTagO = LtWO + WW;
+  localparam integer LTagW  = LtTagO + TagW;
   wire               lw_valid;
   wire [L2W+WW-1:0]  lw_p;
   wire [LTagW-1:0]   lw_tag;
@@ -149,8 +155,8 @@ module rpu_guide_pair #(
     .tag_i({tag_w, w, gin_w[0][GIn-1 -: 2 + HW], gin_w[1][GIn-1 -: 2 + HW], hh_w}),
     .valid_o(lw_valid), .p_o(lw_p), .tag_o(lw_tag));
   wire [LwW-1:0]  lw      = lw_p[L2W+WW-1:TFrac];
-  wire [TagW-1:0] tag_l   = lw_tag[LTagW-1 -: TagW];
-  wire [WW-1:0]   w_l     = lw_tag[LTagW-TagW-1 -: WW];
+  wire [TagW-1:0] tag_l   = lw_tag[LtTagO +: TagW];
+  wire [WW-1:0]   w_l     = lw_tag[LtWO +: WW];
   wire [HhTW-1:0] hh_l    = lw_tag[HhTW-1:0];
   wire [1:0]      mode_l [0:1];
   wire [HW-1:0]   h_l    [0:1];

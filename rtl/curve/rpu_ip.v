@@ -11,6 +11,7 @@
 // Results leave in completion order, which is the input order (both forms keep order: the ring
 // never lets a younger item overtake, see the FIFO and the fixed loop latency).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_ip #(
   parameter integer CoordW   = 24,  // position width (12..40)
@@ -25,13 +26,13 @@ module rpu_ip #(
   parameter integer CtxW     = 1,   // caller's context passed through
   // Derived (do not override).
   parameter integer K    = N / N1,
-  parameter integer TW   = TFrac + 3,
-  parameter integer DW   = CoordW + 1,
-  parameter integer UW   = UnitFrac + 2,
-  parameter integer HW   = CoordW + 5,
-  parameter integer L2W  = 2 * CoordW + 3,
-  parameter integer RadW = 2 * CoordW + 10,
-  parameter integer XW   = CoordW + 3,
+  parameter integer TW   = `RPU_TW(TFrac),
+  parameter integer DW   = `RPU_DW(CoordW),
+  parameter integer UW   = `RPU_UW(UnitFrac),
+  parameter integer HW   = `RPU_HW(CoordW),
+  parameter integer L2W  = `RPU_L2W(CoordW),
+  parameter integer RadW = `RPU_GRADW(CoordW),
+  parameter integer XW   = `RPU_XW(CoordW),
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
   parameter integer StW  = N + TW + 3*XW + MdW + MdW
 ) (
@@ -110,9 +111,12 @@ module rpu_ip #(
   // Re-insert h² after each h: {.., mode1, h1, h1², a1, b1, u1, mode2, h2, h2², a2, b2, u2}.
   localparam integer G2TW = CoordW + TFrac + 3*UW;         // a, b, u of a guide
   localparam integer HeadW = PairW - 2 * GdW;              // A .. L²
+  // in_0q, LSB first: {ctx, g2 (a, b, u), mode2 h2, g1 (a, b, u), mode1 h1, head}.
+  localparam integer InG1O  = CtxW + G2TW + 2 + HW;
+  localparam integer InMh1O = InG1O + G2TW;
   wire [HeadW-1:0]  in_head = in_0q[InTagW-1 -: HeadW];
-  wire [1+HW:0]     in_mh1  = in_0q[InTagW-HeadW-1 -: 2 + HW];
-  wire [G2TW-1:0]   in_g1   = in_0q[InTagW-HeadW-2-HW-1 -: G2TW];
+  wire [1+HW:0]     in_mh1  = in_0q[InMh1O +: 2 + HW];
+  wire [G2TW-1:0]   in_g1   = in_0q[InG1O +: G2TW];
   wire [1+HW:0]     in_mh2  = in_0q[CtxW+G2TW+2+HW-1 -: 2 + HW];
   wire [G2TW-1:0]   in_g2   = in_0q[CtxW+G2TW-1 -: G2TW];
   wire [PairW-1:0]  pair_0q = {in_head, in_mh1, hh1, in_g1, in_mh2, hh2, in_g2};

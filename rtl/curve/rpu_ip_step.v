@@ -7,6 +7,7 @@
 // The segment and interval context rides in candidate 1's tag. Fixed latency: the candidate's,
 // then the pair sums (registered), then the compares and the select (registered).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_ip_step #(
   parameter integer CoordW   = 24,  // position width (12..40)
@@ -23,13 +24,13 @@ module rpu_ip_step #(
   parameter integer K    = N / N1,
   parameter integer J    = 1 << N1,
   parameter integer KW   = 8,                     // step counter width
-  parameter integer TW   = TFrac + 3,
-  parameter integer DW   = CoordW + 1,
-  parameter integer UW   = UnitFrac + 2,
-  parameter integer HW   = CoordW + 5,
-  parameter integer L2W  = 2 * CoordW + 3,
-  parameter integer RadW = 2 * CoordW + 10,
-  parameter integer XW   = CoordW + 3,
+  parameter integer TW   = `RPU_TW(TFrac),
+  parameter integer DW   = `RPU_DW(CoordW),
+  parameter integer UW   = `RPU_UW(UnitFrac),
+  parameter integer HW   = `RPU_HW(CoordW),
+  parameter integer L2W  = `RPU_L2W(CoordW),
+  parameter integer RadW = `RPU_GRADW(CoordW),
+  parameter integer XW   = `RPU_XW(CoordW),
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
   parameter integer StW  = N + TW + 3*XW + MdW + MdW  // {tau, lo.t, lo.X, lo.md, hi.md}
 ) (
@@ -80,6 +81,9 @@ module rpu_ip_step #(
 
   // The side band carried by candidate 1: everything the step needs after the candidates.
   localparam integer SbW = KW + StW + CtxW + TagW;
+  localparam integer SbStO = CtxW + TagW;              // {k, state, ctx, tag}, LSB first
+  localparam integer StTO  = StW - N - TW;             // state: {τ, t, X, md_lo, md_hi}
+  localparam integer StXO  = StTO - 3*XW;
   wire [SbW-1:0] sb_in = {k_in, state_i, ctx_i, tag_i};
 
   wire [J-2:0]      c_valid;
@@ -152,12 +156,12 @@ module rpu_ip_step #(
 
   // Unpack the registered side band.
   wire [KW-1:0]   k_c     = sb_r[SbW-1 -: KW];
-  wire [StW-1:0]  st_c    = sb_r[SbW-KW-1 -: StW];
+  wire [StW-1:0]  st_c    = sb_r[SbStO +: StW];
   wire [CtxW-1:0] ctx_c   = sb_r[CtxW+TagW-1 -: CtxW];
   wire [TagW-1:0] tag_c   = sb_r[TagW-1:0];
   wire [N-1:0]    tau_c   = st_c[StW-1 -: N];
-  wire [TW-1:0]   lo_t_c  = st_c[StW-N-1 -: TW];
-  wire [3*XW-1:0] lo_x_c  = st_c[StW-N-TW-1 -: 3*XW];
+  wire [TW-1:0]   lo_t_c  = st_c[StTO +: TW];
+  wire [3*XW-1:0] lo_x_c  = st_c[StXO +: 3*XW];
   wire [MdW-1:0]  lo_md_c = st_c[2*MdW-1 -: MdW];
   wire [MdW-1:0]  hi_md_c = st_c[MdW-1:0];
   wire [KW+7:0]   shift_c = N[KW+7:0] - N1[KW+7:0] * {8'd0, k_c};

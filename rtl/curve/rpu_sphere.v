@@ -32,6 +32,7 @@
 // Latency = root + 9 + L1 + L2 + L3 + L4 + chord cycles (57 at the defaults; ref::sphere_latency).
 // No backpressure inside (rpu_top reserves room).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_sphere #(
   parameter integer CoordW  = 24,  // signed width of positions, LSB (12..40)
@@ -42,11 +43,11 @@ module rpu_sphere #(
   parameter integer TagW    = 1,   // side-band bits carried with each operand (>= 1)
   // Derived (do not override).
   parameter integer DirW  = DirFrac + 2,     // v̂: Q(2.DirFrac)
-  parameter integer DiffW = CoordW + 1,      // d, AB: differences of two positions
-  parameter integer R2W   = 2 * CoordW + 1,  // R² (the compiler's R² < 2^(2CoordW))
+  parameter integer DiffW = `RPU_DW(CoordW),      // d, AB: differences of two positions
+  parameter integer R2W   = `RPU_R2W(CoordW),  // R² (the compiler's R² < 2^(2CoordW))
   parameter integer TcW   = CoordW + 4,      // tc: |v̂·q| < 3·2^(CoordW+1) for any v̂, q
-  parameter integer HcW   = CoordW + 3,      // hc = isqrt of a (2CoordW+5)-bit radicand
-  parameter integer TW    = TFrac + 3        // alpha, beta: Q(3.TFrac)
+  parameter integer HcW   = `RPU_XW(CoordW),      // hc = isqrt of a (2CoordW+5)-bit radicand
+  parameter integer TW    = `RPU_TW(TFrac)        // alpha, beta: Q(3.TFrac)
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,
@@ -77,9 +78,11 @@ module rpu_sphere #(
   localparam integer PvW   = DirW + DiffW;   // v̂_k·q_k, exact
   localparam integer VqW   = FV + CW + 4;    // v̂·q: |.| < 3·2^(FV+CW+1)
   localparam integer Guard = 2;             // HwParams::kSphereGuard
-  localparam integer WtW   = PvW + 1 - (FV - Guard);  // q × v̂ floored to Q(.Guard) LSB, signed
+  localparam integer WDropW = FV - Guard;   // the fraction bits q × v̂ drops
+  localparam integer WtW   = PvW + 1 - WDropW;  // q × v̂ floored to Q(.Guard) LSB, signed
   localparam integer WsqW  = 2 * WtW - 1;    // wt_k², unsigned
   localparam integer PsW   = WsqW + 2;       // |wt|², unsigned
+  localparam integer PerpW = PsW - 2 * Guard;  // |wt|² floored to LSB²
   localparam integer DiscW = PsW - 2 * Guard + 1;  // R² − perp2, signed (R2W < PsW − 2Guard)
   localparam integer RadW  = 2 * CW + 5;     // the model's sphere_radicand_w()
   localparam integer TpW   = CW + 5;         // t1, t2: |.| < 12·2^CW, signed
@@ -92,15 +95,13 @@ module rpu_sphere #(
   localparam integer SqStages = (RadW - 2 * SqShift + 1) / 2;
   localparam [RadW-1:0] RadMax = {RadW{1'b1}};
 `include "rpu_mul_latency.vh"
-  localparam integer L1 = rpu_mul_latency(DiffW, DirW, 1, 24, 17);
-  localparam integer L2 = rpu_mul_latency(WtW, WtW, 1, 24, 17);
-  localparam integer L3 = rpu_mul_latency(DirW, TpW, 1, 24, 17);
-  localparam integer L4 = rpu_mul_latency(DiffW, DiffW, 1, 24, 17);
-  localparam integer LCh = rpu_mul_latency(InvW + 1, DotW, 1, 24, 17) + 3;  // rpu_chord's
+  localparam integer L1 = `RPU_MUL_LAT(DiffW, DirW, 1);
+  localparam integer L2 = `RPU_MUL_LAT(WtW, WtW, 1);
+  localparam integer L3 = `RPU_MUL_LAT(DirW, TpW, 1);
+  localparam integer L4 = `RPU_MUL_LAT(DiffW, DiffW, 1);
+  localparam integer LCh = `RPU_MUL_LAT(InvW + 1, DotW, 1) + 3;  // rpu_chord's
   // The unit's latency (what the enclosing units count on).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = SqStages + 9 + L1 + L2 + L3 + L4 + LCh;
-  /* verilator lint_on UNUSEDPARAM */
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_sphere: CoordW must be in 12..40");
@@ -110,8 +111,8 @@ module rpu_sphere #(
     if (SqrtW != 0 && (SqrtW < 16 || SqrtW > 126))
       $fatal(1, "rpu_sphere: SqrtW must be 0 or 16..126");
     if (TagW < 1) $fatal(1, "rpu_sphere: TagW must be >= 1");
-    if (DirW != DirFrac + 2 || DiffW != CoordW + 1 || R2W != 2 * CoordW + 1 ||
-        TcW != CoordW + 4 || HcW != CoordW + 3 || TW != TFrac + 3)
+    if (DirW != `RPU_VHATW(DirFrac) || DiffW != `RPU_DW(CoordW) || R2W != `RPU_R2W(CoordW) ||
+        TcW != CoordW + 4 || HcW != `RPU_XW(CoordW) || TW != `RPU_TW(TFrac))
       $fatal(1, "rpu_sphere: derived parameters must not be overridden");
     if (SqStages < 1) $fatal(1, "rpu_sphere: bad square-root depth");
   end
@@ -206,8 +207,8 @@ module rpu_sphere #(
       wire signed [PvW-1:0] a = pca[k*PvW +: PvW];
       wire signed [PvW-1:0] b = pcb[k*PvW +: PvW];
       wire signed [PvW:0]   w = {a[PvW-1], a} - {b[PvW-1], b};
-      assign wt[k*WtW +: WtW] = w[PvW:FV-Guard];  // floor(w · 2^-(FV−Guard))
-      wire unused_w = ^w[FV-Guard-1:0];
+      assign wt[k*WtW +: WtW] = w[PvW:WDropW];  // floor(w · 2^-(FV−Guard))
+      wire unused_w = ^w[WDropW-1:0];
     end
   endgenerate
 
@@ -262,7 +263,7 @@ module rpu_sphere #(
   wire [PsW-1:0] wsum = ws_s + {ws_c, 1'b0};
   wire unused_wsum = ^wsum[2*Guard-1:0];
 
-  reg [PsW-2*Guard-1:0] perp5_q;
+  reg [PerpW-1:0]       perp5_q;
   reg [C4W-1:0]         c5_q;
   reg                   valid5_q;
   always @(posedge clk_i) begin
@@ -489,6 +490,9 @@ module rpu_sphere #(
 
   // Everything the outputs need besides alpha and beta, then {inv_m, inv_s}.
   localparam integer ResW = OutW + 1 + 6 * CW + 3 * DiffW;  // {out, ovf, A, B, AB}
+  // res = {tag, tc, hc, pred1, ovf, A, B, AB}: the offsets of tc and hc from the LSB.
+  localparam integer ResHcO = ResW - OutW + 1;
+  localparam integer ResTcO = ResHcO + HcW;
   reg [3*DiffW-1:0] ab11_q;
   reg [3*DiffW-1:0] ap11_q;
   reg [3*DiffW-1:0] d11_q;
@@ -640,8 +644,8 @@ module rpu_sphere #(
 
   assign valid_o      = alpha_valid;
   assign tag_o        = res[ResW-1 -: TagW];
-  assign tc_o         = res[ResW-TagW-1 -: TcW];
-  assign half_chord_o = res[ResW-TagW-TcW-1 -: HcW];
+  assign tc_o         = res[ResTcO +: TcW];
+  assign half_chord_o = res[ResHcO +: HcW];
   assign pred1_o      = pred1_r;
   assign a_o          = res[3*DiffW+3*CW +: 3*CW];
   assign b_o          = res[3*DiffW +: 3*CW];

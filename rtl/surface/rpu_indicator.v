@@ -115,6 +115,7 @@ module rpu_indicator #(
   localparam integer LW   = SurfW;
   localparam integer AW   = AngleW;
   localparam integer G    = 2;             // guard bits of the scaled coordinates (kSurfGuard)
+  localparam integer KfDropW = KF - G;     // fraction bits a scaled coordinate x·s drops
   localparam integer XSW  = LW + 3;        // x·sx ≫ (KF − G): |·| ≤ 2^(LW+2)
   localparam integer OPW  = LW + 1;        // the constant product's operand: y or y − b
   localparam integer PW   = OPW + MW;      // the constant product P, exact
@@ -127,6 +128,8 @@ module rpu_indicator #(
   localparam integer PJW  = TurnW + 8;     // snail P_j = ρ − j·h_{j−1} (< 2^(TurnW+7))
   localparam integer HIW  = PJW - 1;       // |P_j|
   localparam integer SCLW = CW + G + 2;    // spiral u·sx ≫ (KF − G)
+  localparam integer SclHiW = SCLW - LW;    // its bits from LW up
+  localparam integer XsHiW  = XSW - LW;     // x·sx's bits from LW up
   localparam integer KW   = CW + 2;        // relief k' = kd + y1 + y2 (|k'| < 2^(CW+1))
   localparam integer K2W  = 2 * KW - 2 - KF;  // floor(k'²·2^-KF)
   localparam integer D2W  = 2 * LW + 1;    // s²m² = r2 − (y·sy)², 0 < · ≤ 2^(2LW) where used
@@ -148,16 +151,16 @@ module rpu_indicator #(
   end
 
   // ---- latencies of the products (rpu_mul_latency.vh) ----
-  localparam integer LSx  = rpu_mul_latency(LW, KF + 2, 1, 24, 17);   // x·sx
-  localparam integer LCp  = rpu_mul_latency(OPW, MW, 1, 24, 17);      // y·m
+  localparam integer LSx  = `RPU_MUL_LAT(LW, KF + 2, 1);   // x·sx
+  localparam integer LCp  = `RPU_MUL_LAT(OPW, MW, 1);      // y·m
   localparam integer LF   = LSx > LCp ? LSx : LCp;
-  localparam integer LSc  = rpu_mul_latency(CW, KF + 2, 1, 24, 17);   // spiral u·sx
-  localparam integer LQ   = rpu_mul_latency(LW + 1, LW + 1, 1, 24, 17);  // clamped squares
-  localparam integer LX   = rpu_mul_latency(XSW, XSW, 1, 24, 17);     // (x·sx)²
+  localparam integer LSc  = `RPU_MUL_LAT(CW, KF + 2, 1);   // spiral u·sx
+  localparam integer LQ   = `RPU_MUL_LAT(LW + 1, LW + 1, 1);  // clamped squares
+  localparam integer LX   = `RPU_MUL_LAT(XSW, XSW, 1);     // (x·sx)²
   localparam integer LXY  = LX > 1 + LQ ? LX : 1 + LQ;                 // all three squares
-  localparam integer LK   = rpu_mul_latency(KW, KW, 1, 24, 17);       // k'²
-  localparam integer LKD  = rpu_mul_latency(K2W, D2W, 0, 24, 17);     // k2·s²m²
-  localparam integer LN   = rpu_mul_latency(LW, HIW, 0, 24, 17);      // snail |P|·|P|
+  localparam integer LK   = `RPU_MUL_LAT(KW, KW, 1);       // k'²
+  localparam integer LKD  = `RPU_MUL_LAT(K2W, D2W, 0);     // k2·s²m²
+  localparam integer LN   = `RPU_MUL_LAT(LW, HIW, 0);      // snail |P|·|P|
   // The back end, in cycles after the rotations (the registered bit of each type):
   localparam integer BSp  = LSc + LQ + 2;  // spiral
   localparam integer BEl  = LXY + 2;       // ellipsoid
@@ -170,10 +173,8 @@ module rpu_indicator #(
   localparam integer BM3  = BM1 > BM2 ? BM1 : BM2;
   localparam integer BLast = BM3 > BRe ? BM3 : BRe;  // the last registered bit
   localparam integer LB   = BLast + 1;     // the output register
-  /* verilator lint_off UNUSEDPARAM */
   // The unit's latency without the two CORDICs (ref::indicator_latency adds them).
-  localparam integer LatencyOwn = 1 + LF + rpu_mul_latency(PSW, TurnW, 1, 24, 17) + 3 + LB;
-  /* verilator lint_on UNUSEDPARAM */
+  localparam integer LatencyOwn = 1 + LF + `RPU_MUL_LAT(PSW, TurnW, 1) + 3 + LB;
 
   // m·X = X·2^T1S(m) ± X·2^T2S(m), m = 1..8 (1, 2, 2 + 1, 4, 4 + 1, 4 + 2, 8 − 1, 8).
   function integer t1_shift(input integer k);
@@ -276,8 +277,8 @@ module rpu_indicator #(
   wire [XSW-1:0] xs = pxs[KF-G +: XSW];
   wire [XSW-1:0] ys = pys[KF-G +: XSW];
   wire [XSW-1:0] zs = pzs[KF-G +: XSW];
-  wire unused_f = ^{mv_ys, mv_zs, mv_cp, mt_ys, mt_zs, mt_cp, pxs[KF-G-1:0], pys[KF-G-1:0],
-                    pzs[KF-G-1:0], pxs[SxPW-1], pys[SxPW-1], pzs[SxPW-1]};
+  wire unused_f = ^{mv_ys, mv_zs, mv_cp, mt_ys, mt_zs, mt_cp, pxs[KfDropW-1:0], pys[KfDropW-1:0],
+                    pzs[KfDropW-1:0], pxs[SxPW-1], pys[SxPW-1], pzs[SxPW-1]};
 
   wire [TagW-1:0]  f_tag;
   wire [4:0]       f_typ;
@@ -466,6 +467,8 @@ module rpu_indicator #(
   // T3: the rotation inputs. Saturation to CW − 1 bits (cordic_in): |v| ≤ 2^(CW−2) passes.
   // ===============================================================================================
   localparam integer SatTop = CW - 2;  // bits SatTop and up must equal the sign
+  localparam integer RHiW   = PW - SatTop;   // the product bits from SatTop up
+  localparam integer SpHiW  = SPW - SatTop;  // the spiral offsets' bits from SatTop up
   wire [CW-2:0] sat_max = {1'b0, {(CW - 2){1'b1}}};
   wire [CW-2:0] sat_min = {1'b1, {(CW - 2){1'b0}}};
   reg  [Lanes*CW-1:0] t3_rx_q, t3_ry_q;
@@ -473,7 +476,7 @@ module rpu_indicator #(
   reg  [Lanes-1:0]    t3_sat_q;
   // Y (rocket): saturated to YW bits (exact for ρ < r) and to CW − 1 bits (the CORDIC input).
   wire [PW-YW:0]   r_hi_y = t2_r_q[PW-1:YW-1];
-  wire [PW-SatTop-1:0] r_hi_c = t2_r_q[PW-1:SatTop];
+  wire [RHiW-1:0] r_hi_c = t2_r_q[PW-1:SatTop];
   wire             r_neg  = t2_r_q[PW-1];
   wire             fit_y  = &r_hi_y | ~|r_hi_y;
   wire             fit_c  = &r_hi_c | ~|r_hi_c;
@@ -498,8 +501,8 @@ module rpu_indicator #(
     for (m = 0; m < Lanes; m = m + 1) begin : g_rin
       wire [SPW-1:0] dr = t2_dr_q[m*SPW +: SPW];
       wire [SPW-1:0] dy = t2_dy_q[m*SPW +: SPW];
-      wire [SPW-SatTop-1:0] hr = dr[SPW-1:SatTop];
-      wire [SPW-SatTop-1:0] hy = dy[SPW-1:SatTop];
+      wire [SpHiW-1:0] hr = dr[SPW-1:SatTop];
+      wire [SpHiW-1:0] hy = dy[SPW-1:SatTop];
       wire fr = &hr | ~|hr;
       wire fy = &hy | ~|hy;
       wire [CW-2:0] sr = fr ? dr[CW-2:0] : dr[SPW-1] ? sat_min : sat_max;
@@ -635,8 +638,8 @@ module rpu_indicator #(
       // bits signed, so only those are squared.
       wire [SCLW-1:0] su = pu[KF-G +: SCLW];
       wire [SCLW-1:0] sw = pw[KF-G +: SCLW];
-      wire [SCLW-LW-1:0] hu = su[SCLW-1:LW];
-      wire [SCLW-LW-1:0] hw = sw[SCLW-1:LW];
+      wire [SclHiW-1:0] hu = su[SCLW-1:LW];
+      wire [SclHiW-1:0] hw = sw[SCLW-1:LW];
       reg  [LW:0] qu_q, qw_q;
       reg         big_q;
       always @(posedge clk_i) begin
@@ -659,7 +662,7 @@ module rpu_indicator #(
       reg bit_q;
       always @(posedge clk_i) bit_q <= sp_en[m] & ~big & ~diff[2*LW+2];
       assign sp_bit[m] = bit_q;
-      wire unused_sp = ^{v1, v2, t1, t2, v3, v4, t4, pu[KF-G-1:0], pw[KF-G-1:0], uu[2*LW+1:SQW],
+      wire unused_sp = ^{v1, v2, t1, t2, v3, v4, t4, pu[KfDropW-1:0], pw[KfDropW-1:0], uu[2*LW+1:SQW],
                          ww[2*LW+1:SQW]};
     end
   endgenerate
@@ -780,7 +783,7 @@ module rpu_indicator #(
   // ===============================================================================================
   reg  [LW:0] ey_q;
   reg         ey_big_q;
-  wire [XSW-LW-1:0] ys_hi = r_ys[XSW-1:LW];
+  wire [XsHiW-1:0] ys_hi = r_ys[XSW-1:LW];
   always @(posedge clk_i) begin
     ey_q     <= (&ys_hi | ~|ys_hi) ? r_ys[LW:0] : {(LW + 1){1'b0}};
     ey_big_q <= ~(&ys_hi | ~|ys_hi);

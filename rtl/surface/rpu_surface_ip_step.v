@@ -82,8 +82,11 @@ module rpu_surface_ip_step #(
   localparam integer LInd  = rpu_surface_indicator_latency(SurfW, AngleW);
   // The lane-0 x product's tag: {k, shift, state, ctx, la, x_negative, last_turn, desc}.
   localparam integer SbW   = KW + ShW + StW + CtxW + 3 * LW + 2 + DescW;
-  // The lane-0 indicator's tag: {k, shift, state, ctx}.
-  localparam integer ItW   = KW + ShW + StW + CtxW;
+  // The lane-0 indicator's tag: {k, shift, state, ctx}, LSB first.
+  localparam integer ItStO = CtxW;
+  localparam integer ItShO = ItStO + StW;
+  localparam integer ItKO  = ItShO + ShW;
+  localparam integer ItW   = ItKO + KW;
 
   initial begin
     if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_surface_ip_step: SurfW must be in 16..36");
@@ -218,9 +221,9 @@ module rpu_surface_ip_step #(
 `endif
 
   // ---- registered change bits (pass k) and the lanes' overflow, masked to the lanes used ----
-  wire [KW-1:0]   a_k     = ind_it[ItW-1 -: KW];
-  wire [ShW-1:0]  a_shift = ind_it[ItW-KW-1 -: ShW];
-  wire [StW-1:0]  a_st    = ind_it[CtxW +: StW];
+  wire [KW-1:0]   a_k     = ind_it[ItKO +: KW];
+  wire [ShW-1:0]  a_shift = ind_it[ItShO +: ShW];
+  wire [StW-1:0]  a_st    = ind_it[ItStO +: StW];
   wire            a_start = a_k == {KW{1'b0}};
   wire [J:0]      s_in;                    // s_0 = lo, s_1 .. s_{J−1} the lanes, s_J = hi
   assign s_in[0] = a_st[3];

@@ -6,7 +6,6 @@
 // against the instance in simulation (the lane-0 indicator's valid_o must come exactly that many
 // cycles after its valid_i), so a change of the indicator's schedule stops the first simulation.
 // The C++ side of every formula: ref/model/surface/rpu_surface_latency.cpp.
-/* verilator lint_off VARHIDDEN */
 function integer rpu_surface_max(input integer a, input integer b);
   rpu_surface_max = a > b ? a : b;
 endfunction
@@ -19,29 +18,28 @@ function integer rpu_surface_indicator_latency(input integer lw, input integer a
     kf = lw; mw = lw + 2; turn_w = lw + 8; cw = lw + 6;
     xsw = lw + 3; opw = lw + 1; psw = aw + 2; hiw = turn_w + 7;
     kw = cw + 2; k2w = 2 * kw - 2 - kf; d2w = 2 * lw + 1;
-    lf  = rpu_surface_max(rpu_mul_latency(lw, kf + 2, 1, 24, 17),
-                          rpu_mul_latency(opw, mw, 1, 24, 17));
-    lsc = rpu_mul_latency(cw, kf + 2, 1, 24, 17);
-    lq  = rpu_mul_latency(lw + 1, lw + 1, 1, 24, 17);
-    lxy = rpu_surface_max(rpu_mul_latency(xsw, xsw, 1, 24, 17), 1 + lq);
-    lk  = rpu_mul_latency(kw, kw, 1, 24, 17);
-    lkd = rpu_mul_latency(k2w, d2w, 0, 24, 17);
-    ln  = rpu_mul_latency(lw, hiw, 0, 24, 17);
+    lf  = rpu_surface_max(`RPU_MUL_LATENCY(lw, kf + 2, 1, 24, 17),
+                          `RPU_MUL_LATENCY(opw, mw, 1, 24, 17));
+    lsc = `RPU_MUL_LATENCY(cw, kf + 2, 1, 24, 17);
+    lq  = `RPU_MUL_LATENCY(lw + 1, lw + 1, 1, 24, 17);
+    lxy = rpu_surface_max(`RPU_MUL_LATENCY(xsw, xsw, 1, 24, 17), 1 + lq);
+    lk  = `RPU_MUL_LATENCY(kw, kw, 1, 24, 17);
+    lkd = `RPU_MUL_LATENCY(k2w, d2w, 0, 24, 17);
+    ln  = `RPU_MUL_LATENCY(lw, hiw, 0, 24, 17);
     tkd = rpu_surface_max(1 + lk, lxy + 1);
     last = rpu_surface_max(rpu_surface_max(lsc + lq + 2, lxy + 2),
                            rpu_surface_max(rpu_surface_max(ln + 5, 2), tkd + lkd));
     // rpu_cordic at W = cw, Iters = aw: guard bits clog2(aw) + 2, gain fraction bits W + 2.
     cg = $clog2(aw) + 2;
-    tv = 1 + aw + rpu_mul_latency(cw + cg, cw + 2, 0, 13, 17) + 1;
-    tr = 1 + aw + rpu_mul_latency(cw + 1 + cg, cw + 3, 1, 13, 17) + 1;
+    tv = 1 + aw + `RPU_MUL_LATENCY(cw + cg, cw + 2, 0, 13, 17) + 1;
+    tr = 1 + aw + `RPU_MUL_LATENCY(cw + 1 + cg, cw + 3, 1, 13, 17) + 1;
     rpu_surface_indicator_latency =
-        1 + lf + tv + rpu_mul_latency(psw, turn_w, 1, 24, 17) + 3 + tr + last + 1;
+        1 + lf + tv + `RPU_MUL_LATENCY(psw, turn_w, 1, 24, 17) + 3 + tr + last + 1;
   end
 endfunction
 
 // One pass of rpu_surface_ip_step: products lAB'·m, the sum, the indicator, change bits, select.
 function integer rpu_surface_pass_latency(input integer lw, input integer aw, input integer n);
   rpu_surface_pass_latency =
-      rpu_mul_latency(lw + 1, n + 2, 1, 24, 17) + 1 + rpu_surface_indicator_latency(lw, aw) + 2;
+      `RPU_MUL_LATENCY(lw + 1, n + 2, 1, 24, 17) + 1 + rpu_surface_indicator_latency(lw, aw) + 2;
 endfunction
-/* verilator lint_on VARHIDDEN */

@@ -67,6 +67,7 @@
 // ref::surface_setup_latency). No stage has two wide carry chains in series.
 // No backpressure inside (the enclosing top reserves room).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_surface_setup #(
   parameter integer CoordW  = 24,  // CW: signed width of positions, LSB (12..40)
@@ -79,8 +80,8 @@ module rpu_surface_setup #(
   parameter integer TagW    = 1,   // side-band bits carried with each item (>= 1)
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,     // v̂: Q(2.FV)
-  parameter integer DiffW  = CoordW + 1,      // B − A, X − origin
-  parameter integer R2W    = 2 * CoordW + 1,  // R²
+  parameter integer DiffW  = `RPU_DW(CoordW),      // B − A, X − origin
+  parameter integer R2W    = `RPU_R2W(CoordW),  // R²
   parameter integer MantW  = SurfW + 2,       // MW: the entries of M, signed
   parameter integer ConstW = SurfW + 2,       // end_cos, end_sin: Q(1.KF), KF = LW, signed
   parameter integer SW     = SurfW + 3,       // s: Q(1.SF), SF = LW + 2, unsigned
@@ -140,21 +141,19 @@ module rpu_surface_setup #(
   localparam integer SpRadW   = 2 * CW + 5;
   localparam integer SpShift  = (SqrtW == 0 || SpRadW <= SqrtW) ? 0 : (SpRadW - SqrtW + 1) / 2;
   localparam integer SpStages = (SpRadW - 2 * SpShift + 1) / 2;
-  localparam integer SpL1  = rpu_mul_latency(DiffW, DirW, 1, 24, 17);
-  localparam integer SpL2  = rpu_mul_latency(CW + 6, CW + 6, 1, 24, 17);
-  localparam integer SpL3  = rpu_mul_latency(DirW, CW + 5, 1, 24, 17);
-  localparam integer SpL4  = rpu_mul_latency(DiffW, DiffW, 1, 24, 17);
-  localparam integer SpLCh = rpu_mul_latency(InvW + 1, 2 * DiffW + 2, 1, 24, 17) + 3;
+  localparam integer SpL1  = `RPU_MUL_LAT(DiffW, DirW, 1);
+  localparam integer SpL2  = `RPU_MUL_LAT(CW + 6, CW + 6, 1);
+  localparam integer SpL3  = `RPU_MUL_LAT(DirW, CW + 5, 1);
+  localparam integer SpL4  = `RPU_MUL_LAT(DiffW, DiffW, 1);
+  localparam integer SpLCh = `RPU_MUL_LAT(InvW + 1, 2 * DiffW + 2, 1) + 3;
   localparam integer Ls    = SpStages + 9 + SpL1 + SpL2 + SpL3 + SpL4 + SpLCh;
-  localparam integer L1 = rpu_mul_latency(DiffW, MW, 1, 24, 17);
-  localparam integer L2 = rpu_mul_latency(LW, KW, 1, 24, 17);
-  localparam integer L3W = rpu_mul_latency(DiffW, SW + 1, 1, 24, 17);
-  localparam integer L3L = rpu_mul_latency(LDiffW, SW + 1, 1, 24, 17);
+  localparam integer L1 = `RPU_MUL_LAT(DiffW, MW, 1);
+  localparam integer L2 = `RPU_MUL_LAT(LW, KW, 1);
+  localparam integer L3W = `RPU_MUL_LAT(DiffW, SW + 1, 1);
+  localparam integer L3L = `RPU_MUL_LAT(LDiffW, SW + 1, 1);
   localparam integer L3 = L3W > L3L ? L3W : L3L;  // both groups run at this latency
   // The unit's latency (what the enclosing units count on; ref::surface_setup_latency).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = Ls + 1 + L1 + 4 + L2 + 3 + SW + 2 + L3 + 2;
-  /* verilator lint_on UNUSEDPARAM */
   // The descriptor FIFO holds every item the sphere unit has in flight (at most Ls).
   localparam integer FifoLog2 = Ls < 16 ? 4 : Ls < 32 ? 5 : Ls < 64 ? 6 : Ls < 128 ? 7 : 8;
 
@@ -164,7 +163,7 @@ module rpu_surface_setup #(
     if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_surface_setup: SurfW must be in 16..36");
     if (AngleW < 12 || AngleW > 32) $fatal(1, "rpu_surface_setup: AngleW must be in 12..32");
     if (TagW < 1) $fatal(1, "rpu_surface_setup: TagW must be >= 1");
-    if (DirW != DirFrac + 2 || DiffW != CoordW + 1 || R2W != 2 * CoordW + 1 ||
+    if (DirW != `RPU_VHATW(DirFrac) || DiffW != `RPU_DW(CoordW) || R2W != `RPU_R2W(CoordW) ||
         MantW != SurfW + 2 || ConstW != SurfW + 2 || SW != SurfW + 3 || LDiffW != SurfW + 1)
       $fatal(1, "rpu_surface_setup: derived parameters must not be overridden");
   end
@@ -711,8 +710,9 @@ module rpu_surface_setup #(
   // cd = {tag, piece, az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn, z_lo, o_lo, z_hi,
   //       o_hi, A, AB, pred1, ovf, la, lab}
   localparam integer CxW = CeW - TagW - 5;  // {A, AB, pred1, ovf, la, lab}
+  localparam integer CdAzO = CdW - TagW - 3;  // az in cd
   localparam [SW-1:0] One = {1'b1, {SF{1'b0}}};
-  wire       azd  = cd[CdW-TagW-3];
+  wire       azd  = cd[CdAzO];
   wire       zlod = cd[CxW + 3];
   wire       olod = cd[CxW + 2];
   wire       zhid = cd[CxW + 1];
@@ -750,8 +750,10 @@ module rpu_surface_setup #(
   // c10 = {tag, piece, az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn, A, AB, pred1,
   //        ovf, la, lab}
   localparam integer OffPred = 3 * LW + 3 * LDiffW + 1;  // pred1 in the {A .. lab} block
-  wire [1:0] piece10 = c10_q[CdW-5-TagW -: 2];
-  wire       az10    = c10_q[CdW-7-TagW];
+  localparam integer C10AzO    = CdAzO - 4;  // c10 drops the four flags z_lo .. o_hi below az
+  localparam integer C10PieceO = C10AzO + 1;
+  wire [1:0] piece10 = c10_q[C10PieceO +: 2];
+  wire       az10    = c10_q[C10AzO];
   wire       hx10    = c10_q[CxW + 5];
   wire       he10    = c10_q[CxW + 4];
   wire       pred10  = c10_q[OffPred];
@@ -916,6 +918,9 @@ module rpu_surface_setup #(
 
   // {tag, pred1, piece_valid, pieces, s_lo, s_hi, ovf, x_negative, last_turn}
   localparam integer CoW = TagW + 4 + 2 * SW + 1 + 2;
+  // c14, LSB first: last_turn, x_negative, ovf, s_hi, s_lo, pieces, piece_valid, pred1, tag.
+  localparam integer C14PiecesO = 3 + 2 * SW;
+  localparam integer C14TagO    = C14PiecesO + 4;
   reg [6*CW-1:0] wend13_q;
   reg [6*LW-1:0] lend13_q;
   reg [CoW-1:0]  c13_q;
@@ -972,10 +977,10 @@ module rpu_surface_setup #(
 
   // c14 = {tag, pred1, piece_valid, pieces, s_lo, s_hi, ovf, x_negative, last_turn}
   assign valid_o       = valid14_q;
-  assign tag_o         = c14_q[CoW-1 -: TagW];
-  assign pred1_o       = c14_q[CoW-TagW-1];
-  assign piece_valid_o = c14_q[CoW-TagW-2];
-  assign pieces_o      = c14_q[CoW-TagW-3 -: 2];
+  assign tag_o         = c14_q[C14TagO +: TagW];
+  assign pred1_o       = c14_q[C14TagO - 1];
+  assign piece_valid_o = c14_q[C14PiecesO + 2];
+  assign pieces_o      = c14_q[C14PiecesO +: 2];
   assign s_lo_o        = c14_q[3 + SW +: SW];
   assign s_hi_o        = c14_q[3 +: SW];
   assign ovf_o         = c14_q[2];

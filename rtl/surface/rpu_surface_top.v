@@ -38,6 +38,7 @@
 // Latency = setup + IP + Lx + 1 + Ld + 1 (ref::surface_top_latency; 105 + 721 + 2 + 1 + 3 + 1 =
 // 833 at the defaults).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_surface_top #(
   parameter integer CoordW   = 24,  // CW: signed width of positions, LSB (12..40)
@@ -55,13 +56,13 @@ module rpu_surface_top #(
   parameter integer TagW     = 1,   // side-band bits carried with each item (>= 1)
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
-  parameter integer DiffW  = CoordW + 1,               // B' − A', X − h
-  parameter integer BR2W   = 2 * CoordW + 1,           // the bounding sphere's R²
+  parameter integer DiffW  = `RPU_DW(CoordW),               // B' − A', X − h
+  parameter integer BR2W   = `RPU_R2W(CoordW),           // the bounding sphere's R²
   parameter integer MantW  = SurfW + 2,                // M's entries, ScaledConst mantissas
   parameter integer ConstW = SurfW + 2,                // end_cos, end_sin, kd, ke2: Q(1.KF)
   parameter integer TurnW  = SurfW + 8,                // a_turn, k_turn
   parameter integer R2W    = 2 * SurfW + 1,            // the indicator's r2
-  parameter integer EdgeW  = 4 + EdgeFrac + 14,        // W: Q(4.FE+14)
+  parameter integer EdgeW  = `RPU_EGW(EdgeFrac),        // W: Q(4.FE+14)
   parameter integer DepthW = CoordW + 4 + EdgeW + 2    // rpu_capture's depth
 ) (
   input  wire                clk_i,
@@ -144,7 +145,7 @@ module rpu_surface_top #(
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_surface_top: CoordW must be in 12..40");
     if (EdgeFrac < 8 || EdgeFrac > 40) $fatal(1, "rpu_surface_top: EdgeFrac must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_surface_top: TagW must be >= 1");
-    if (DirW != DirFrac + 2 || DiffW != CoordW + 1 || BR2W != 2 * CoordW + 1 ||
+    if (DirW != `RPU_VHATW(DirFrac) || DiffW != `RPU_DW(CoordW) || BR2W != `RPU_R2W(CoordW) ||
         MantW != SurfW + 2 || ConstW != SurfW + 2 || TurnW != SurfW + 8 ||
         R2W != 2 * SurfW + 1 || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
       $fatal(1, "rpu_surface_top: derived parameters must not be overridden");

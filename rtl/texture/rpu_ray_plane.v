@@ -24,6 +24,7 @@
 // bits (exact whenever the result is used) and the sum is exact in DepthW bits. For an invalid
 // point the depth products' operands are zeroed, so the depth is zero as the twin's.
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_ray_plane #(
   parameter integer CoordW   = 24,  // CW: signed width of positions, LSB (12..40)
@@ -32,7 +33,7 @@ module rpu_ray_plane #(
   parameter integer TagW     = 1,   // side-band bits carried with each ray (>= 1)
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
-  parameter integer EdgeW  = 4 + EdgeFrac + 14,        // W: Q(4.FE+14)
+  parameter integer EdgeW  = `RPU_EGW(EdgeFrac),        // W: Q(4.FE+14)
   parameter integer DepthW = CoordW + 4 + EdgeW + 2    // depth: rpu_capture's depth_o width
 ) (
   input  wire                clk_i,
@@ -60,24 +61,23 @@ module rpu_ray_plane #(
   localparam integer PW    = DqW + EdgeW;    // one depth product
   localparam integer SW    = PW + 2;         // the sum of three
   // Side band through rpu_div: {tag, ok, −h_z, W, v̂_y, v̂_x, h_y, h_x}.
-  localparam integer SbW   = TagW + 1 + DqW + 3 * EdgeW + 2 * DirW + 2 * CW;
+  localparam integer SbDataW = DqW + 3 * EdgeW + 2 * DirW + 2 * CW;  // {−h_z, W, v̂_y, v̂_x, h_y, h_x}
+  localparam integer SbW     = TagW + 1 + SbDataW;
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_ray_plane: CoordW must be in 12..40");
     if (DirFrac < 8 || DirFrac > 40) $fatal(1, "rpu_ray_plane: DirFrac must be in 8..40");
     if (EdgeFrac < 8 || EdgeFrac > 40) $fatal(1, "rpu_ray_plane: EdgeFrac must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_ray_plane: TagW must be >= 1");
-    if (DirW != DirFrac + 2 || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
+    if (DirW != `RPU_VHATW(DirFrac) || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
       $fatal(1, "rpu_ray_plane: derived parameters must not be overridden");
   end
 
 `include "rpu_mul_latency.vh"
-  localparam integer LatPt = rpu_mul_latency(QuotW + 1, DirW, 1, 24, 17);
-  localparam integer LatD  = rpu_mul_latency(DqW, EdgeW, 1, 24, 17);
+  localparam integer LatPt = `RPU_MUL_LAT(QuotW + 1, DirW, 1);
+  localparam integer LatD  = `RPU_MUL_LAT(DqW, EdgeW, 1);
   // The unit's latency (what the enclosing units count on; ref::ray_plane_latency).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = CoordW + 5 + LatPt + LatD;
-  /* verilator lint_on UNUSEDPARAM */
 
   // ---- stage 0: |h_z|, |v̂_z|, the sign test; −h_z ----
   wire signed [CW-1:0]   hz = eye_i[2*CW +: CW];
@@ -92,13 +92,13 @@ module rpu_ray_plane #(
   wire                   sign_ok = (|hz) & (|vz) & (hz_neg ^ vz_neg);
   wire signed [DqW-1:0]  nhz     = -{hz[CW-1], hz};
   // Side band from here to the divider's output: {tag, ok, −h_z, W, v̂_y, v̂_x, h_y, h_x}.
-  wire [SbW-2-TagW:0]    sb_data = {nhz, w_i, vhat_i[0 +: 2*DirW], eye_i[0 +: 2*CW]};
+  wire [SbDataW-1:0]    sb_data = {nhz, w_i, vhat_i[0 +: 2*DirW], eye_i[0 +: 2*CW]};
 
   reg              s0_valid_q;
   reg [CW-1:0]     s0_hz_abs_q;
   reg [DirW-1:0]   s0_vz_abs_q;
   reg              s0_sign_ok_q;
-  reg [SbW-2-TagW:0] s0_sb_q;
+  reg [SbDataW-1:0] s0_sb_q;
   reg [TagW-1:0]   s0_tag_q;
   always @(posedge clk_i) begin
     s0_hz_abs_q  <= hz_abs;

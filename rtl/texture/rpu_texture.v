@@ -33,6 +33,7 @@
 // unsigned: it holds round((w0·S)²) for a half width w0·S up to 2^CW LSB, the whole coordinate
 // range (the normalisation keeps w0·S < 7/16·2^CW).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_texture #(
   parameter integer CoordW   = 24,  // CW: signed width of positions (12..40)
@@ -42,13 +43,13 @@ module rpu_texture #(
   parameter integer SqrtW    = 0,   // widest guide square-root radicand; 0 = exact (16..126)
   parameter integer TagW     = 1,   // side-band bits carried with each pair (>= 1)
   // Derived (do not override).
-  parameter integer TW   = TFrac + 3,       // t̂: Q(3.FT)
-  parameter integer DW   = CoordW + 1,      // d = p2 − p1
-  parameter integer UW   = UnitFrac + 2,    // u: Q(2.FU)
-  parameter integer HW   = CoordW + 5,      // guide height h (rpu_guide_pair)
-  parameter integer L2W  = 2 * CoordW + 3,  // L² = |d|²
-  parameter integer XW   = CoordW + 3,      // X (rpu_curve_point)
-  parameter integer W02W = 2 * CoordW + 1   // w0_2, unsigned
+  parameter integer TW   = `RPU_TW(TFrac),       // t̂: Q(3.FT)
+  parameter integer DW   = `RPU_DW(CoordW),      // d = p2 − p1
+  parameter integer UW   = `RPU_UW(UnitFrac),    // u: Q(2.FU)
+  parameter integer HW   = `RPU_HW(CoordW),      // guide height h (rpu_guide_pair)
+  parameter integer L2W  = `RPU_L2W(CoordW),  // L² = |d|²
+  parameter integer XW   = `RPU_XW(CoordW),      // X (rpu_curve_point)
+  parameter integer W02W = `RPU_R2W(CoordW)   // w0_2, unsigned
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,
@@ -106,27 +107,25 @@ module rpu_texture #(
     if (UnitFrac < 8 || UnitFrac > 40) $fatal(1, "rpu_texture: UnitFrac must be in 8..40");
     if (InvW < 8 || InvW > 40) $fatal(1, "rpu_texture: InvW must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_texture: TagW must be >= 1");
-    if (TW != TFrac + 3 || DW != CoordW + 1 || UW != UnitFrac + 2 || HW != CoordW + 5 ||
-        L2W != 2 * CoordW + 3 || XW != CoordW + 3 || W02W != 2 * CoordW + 1)
+    if (TW != `RPU_TW(TFrac) || DW != `RPU_DW(CoordW) || UW != `RPU_UW(UnitFrac) || HW != `RPU_HW(CoordW) ||
+        L2W != `RPU_L2W(CoordW) || XW != `RPU_XW(CoordW) || W02W != `RPU_R2W(CoordW))
       $fatal(1, "rpu_texture: derived parameters must not be overridden");
   end
 
 `include "rpu_mul_latency.vh"
   // The front products, all padded to the slowest (LF), and the squares e_k² (LE).
-  localparam integer LF1 = rpu_mul_latency(R1W, DW, 1, 24, 17);
-  localparam integer LF2 = rpu_mul_latency(DW, R2W, 1, 24, 17);
-  localparam integer LF3 = rpu_mul_latency(R1W, R1W, 1, 24, 17);
-  localparam integer LF4 = rpu_mul_latency(R2W, R2W, 1, 24, 17);
+  localparam integer LF1 = `RPU_MUL_LAT(R1W, DW, 1);
+  localparam integer LF2 = `RPU_MUL_LAT(DW, R2W, 1);
+  localparam integer LF3 = `RPU_MUL_LAT(R1W, R1W, 1);
+  localparam integer LF4 = `RPU_MUL_LAT(R2W, R2W, 1);
   localparam integer LFa = LF1 > LF2 ? LF1 : LF2;
   localparam integer LFb = LF3 > LF4 ? LF3 : LF4;
   localparam integer LF  = LFa > LFb ? LFa : LFb;
-  localparam integer LE  = rpu_mul_latency(EW, EW, 1, 24, 17);
-  localparam integer LCh = rpu_mul_latency(InvW + 1, DotW, 1, 24, 17) + 3;  // rpu_chord's
+  localparam integer LE  = `RPU_MUL_LAT(EW, EW, 1);
+  localparam integer LCh = `RPU_MUL_LAT(InvW + 1, DotW, 1) + 3;  // rpu_chord's
   // The unit's latency (what the enclosing units count on; ref::texture_latency), with the guide
   // pair's and the curve point's (their headers).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer LatOwn = 6 + LF + LE + LCh;
-  /* verilator lint_on UNUSEDPARAM */
 
   genvar c;
 

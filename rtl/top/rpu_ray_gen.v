@@ -28,6 +28,7 @@
 // Under them the sum is computed modulo 2^(4+FV+14), which gives the exact value's low bits and
 // hence exactly the twin's v. The edge vectors are exact for every input (EdgeOutW bits).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_ray_gen #(
   parameter integer DirFrac  = 24,  // FV: fraction bits of the ray direction (8..40)
@@ -35,8 +36,8 @@ module rpu_ray_gen #(
   parameter integer IdxW     = 14,  // pixel index width; image sides < 2^14 (guard bits) (1..14)
   parameter integer TagW     = 1,   // side-band bits carried with each pixel (>= 1)
   // Derived (do not override). 4 integer bits (kDirInt, kEdgeInt), 14 guard bits (kRayGuard).
-  parameter integer VgW      = 4 + DirFrac + 14,   // v0, dx, dy: Q(4.FV+14)
-  parameter integer EgW      = 4 + EdgeFrac + 14,  // el0, et0, σW: Q(4.FE+14)
+  parameter integer VgW      = `RPU_VGW(DirFrac),   // v0, dx, dy: Q(4.FV+14)
+  parameter integer EgW      = `RPU_EGW(EdgeFrac),  // el0, et0, σW: Q(4.FE+14)
   parameter integer VW       = 4 + DirFrac,        // v: Q(4.FV)
   parameter integer VhW      = 2 + DirFrac,        // v̂: Q(2.FV)
   parameter integer EdgeOutW = EgW + IdxW + 1      // E_*: el0 − k·σW for 0 <= k <= 2^IdxW, exact
@@ -87,15 +88,13 @@ module rpu_ray_gen #(
   end
 
 `include "rpu_mul_latency.vh"
-  localparam integer L1v = rpu_mul_latency(VgW, IdxW + 1, 1, 24, 17);
-  localparam integer L1e = rpu_mul_latency(EgW, IdxW + 1, 1, 24, 17);
+  localparam integer L1v = `RPU_MUL_LAT(VgW, IdxW + 1, 1);
+  localparam integer L1e = `RPU_MUL_LAT(EgW, IdxW + 1, 1);
   localparam integer L1 = L1v > L1e ? L1v : L1e;
-  localparam integer L2 = rpu_mul_latency(VW, VW, 1, 24, 17);
-  localparam integer L3 = rpu_mul_latency(QuotW + 1, VW, 1, 24, 17);
+  localparam integer L2 = `RPU_MUL_LAT(VW, VW, 1);
+  localparam integer L3 = `RPU_MUL_LAT(QuotW + 1, VW, 1);
   // The unit's latency (what the enclosing units count on).
-  /* verilator lint_off UNUSEDPARAM */
   localparam integer Latency = 2 * DirFrac + 10 + L1 + L2 + L3;
-  /* verilator lint_on UNUSEDPARAM */
 
   // ---- the products i·dx, j·dy, i·σW, j·σW (pixel indices as non-negative signed operands) ----
   localparam integer C1W = TagW + 3 * EgW + 6 * EgW + 3 * VgW;  // {tag, σW, et0, el0, v0}

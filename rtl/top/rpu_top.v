@@ -17,6 +17,7 @@
 // 2^FifoLog2 items are in flight or waiting in the output FIFOs (a credit count of registers),
 // so no FIFO can overflow and no combinational ready path crosses the pipeline.
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_top #(
   parameter integer CoordW   = 24,  // position width (12..40)
@@ -35,20 +36,15 @@ module rpu_top #(
   parameter integer IdW      = 32,  // width of the caller's work-item id (1..64)
   parameter integer PrimW    = 16,  // primitive id width (1..31)
   parameter integer FifoLog2 = 10,  // log2 of the items in flight + waiting (2..12)
-  // Derived (do not override).
-  parameter integer VgW   = 4 + DirFrac + 14,
-  parameter integer EgW   = 4 + EdgeFrac + 14,
-  parameter integer DW    = CoordW + 1,
-  parameter integer TW    = TFrac + 3,
-  parameter integer UW    = UnitFrac + 2,
-  parameter integer HW    = CoordW + 5,
-  parameter integer L2W   = 2 * CoordW + 3,
-  parameter integer R2W   = 2 * CoordW + 1,
-  parameter integer XW    = CoordW + 3,
-  parameter integer GdW   = 2 + HW + CoordW + TFrac + 3*UW,           // one guide descriptor
-  parameter integer CamW  = 9*VgW + 12*EgW + 3*CoordW,                 // camera descriptor
-  parameter integer SegW  = 1 + PrimW + 3*CoordW + 3*DW + 3*CoordW + R2W + L2W + InvW + 7 + 2*GdW,
-  parameter integer DepthW = CoordW + 4 + EgW + 2
+  // Derived (do not override): the port widths; the layouts themselves are in
+  // rpu_cam_desc.vh and rpu_seg_desc.vh, which check these totals.
+  parameter integer TW     = `RPU_TW(TFrac),
+  parameter integer XW     = `RPU_XW(CoordW),
+  parameter integer CamW   = 9 * `RPU_VGW(DirFrac) + 12 * `RPU_EGW(EdgeFrac) + 3 * CoordW,
+  parameter integer SegW   = 1 + PrimW + 9 * CoordW + 3 + `RPU_R2W(CoordW) + `RPU_L2W(CoordW)
+                           + InvW + 7 + 2 * (2 + `RPU_HW(CoordW) + CoordW + TFrac
+                                             + 3 * `RPU_UW(UnitFrac)),
+  parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,
@@ -93,19 +89,21 @@ module rpu_top #(
   output wire [DepthW-1:0]   pix_depth_o,  // 0 without a hit
   output wire [PrimW-1:0]    pix_prim_o    // 0 without a hit
 );
-  localparam integer EoW  = EgW + IdxW + 1;   // rpu_ray_gen's edge outputs
-  localparam integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8;
-  localparam integer StW  = N + TW + 3*XW + 2*MdW;
-  localparam integer ItW  = 1 + IdW + 2*IdxW + SegAddrW;  // the work item: {last, id, i, j, seg}
-  localparam integer SbW  = SegW - 1;                 // a descriptor without its texture bit
-  localparam integer W02W = 2 * CoordW + 1;           // w0_2 (in the R2 field, R2W bits)
-  localparam integer EdgW = 12 * EgW;                 // four edge vectors, Q(4.FE+14)
+  localparam integer EgW  = `RPU_EGW(EdgeFrac);
+  localparam integer EoW  = EgW + IdxW + 1;           // rpu_ray_gen's edge outputs
+  localparam integer MdW  = Metric == 0 ? CoordW + 4 : `RPU_MD2W(CoordW);
+`include "rpu_guide_desc.vh"
+`include "rpu_seg_desc.vh"
+`include "rpu_cam_desc.vh"
+`include "rpu_top_words.vh"
 
   initial begin
     if (SegAddrW < 1 || SegAddrW > 16) $fatal(1, "rpu_top: SegAddrW must be in 1..16");
     if (IdxW < 1 || IdxW > 14) $fatal(1, "rpu_top: IdxW must be in 1..14");
     if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_top: FifoLog2 must be in 2..12");
     if (PrimW < 1 || PrimW > 31) $fatal(1, "rpu_top: PrimW must be in 1..31");
+    if (SegW != SegWords || CamW != CamWords)
+      $fatal(1, "rpu_top: SegW/CamW are derived; do not override them");
   end
 
   // ---- descriptor storage ----
@@ -115,14 +113,14 @@ module rpu_top #(
     if (cam_we_i) cam_q <= cam_data_i;
     if (seg_we_i) seg_mem[seg_addr_i] <= seg_data_i;
   end
-  wire [3*VgW-1:0]   cam_v0  = cam_q[CamW-1 -: 3*VgW];
-  wire [3*VgW-1:0]   cam_dx  = cam_q[CamW-3*VgW-1 -: 3*VgW];
-  wire [3*VgW-1:0]   cam_dy  = cam_q[CamW-6*VgW-1 -: 3*VgW];
-  wire [3*EgW-1:0]   cam_el0 = cam_q[CamW-9*VgW-1 -: 3*EgW];
-  wire [3*EgW-1:0]   cam_et0 = cam_q[CamW-9*VgW-3*EgW-1 -: 3*EgW];
-  wire [3*EgW-1:0]   cam_sw  = cam_q[CamW-9*VgW-6*EgW-1 -: 3*EgW];
-  wire [3*EgW-1:0]   cam_w   = cam_q[CamW-9*VgW-9*EgW-1 -: 3*EgW];
-  wire [3*CoordW-1:0] cam_eye = cam_q[3*CoordW-1:0];
+  wire [CamVW-1:0]   cam_v0  = cam_q[CamV0O +: CamVW];
+  wire [CamVW-1:0]   cam_dx  = cam_q[CamDxO +: CamVW];
+  wire [CamVW-1:0]   cam_dy  = cam_q[CamDyO +: CamVW];
+  wire [CamEW-1:0]   cam_el0 = cam_q[CamEl0O +: CamEW];
+  wire [CamEW-1:0]   cam_et0 = cam_q[CamEt0O +: CamEW];
+  wire [CamEW-1:0]   cam_sw  = cam_q[CamSwO +: CamEW];
+  wire [CamEW-1:0]   cam_w   = cam_q[CamWO +: CamEW];
+  wire [CamEyeW-1:0] cam_eye = cam_q[CamEyeO +: CamEyeW];
 
   // ---- admission: credits for every item in flight or waiting in the output FIFO ----
   localparam integer Depth = 1 << FifoLog2;
@@ -149,8 +147,8 @@ module rpu_top #(
   end
 
   // ---- ray generator; the item and its descriptor ride along ----
-  wire [IdxW-1:0] it_i = item_q[2*IdxW+SegAddrW-1 -: IdxW];
-  wire [IdxW-1:0] it_j = item_q[IdxW+SegAddrW-1 -: IdxW];
+  wire [IdxW-1:0] it_i = item_q[ItIO +: IdxW];
+  wire [IdxW-1:0] it_j = item_q[ItJO +: IdxW];
   wire            rg_valid;
   wire [3*(4+DirFrac)-1:0] rg_v_unused;
   wire [3*(2+DirFrac)-1:0] rg_vhat;
@@ -168,36 +166,35 @@ module rpu_top #(
   genvar c;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_narrow
-      assign rg_edges[9*EgW + c*EgW +: EgW] = rg_el[c*EoW +: EgW];
-      assign rg_edges[6*EgW + c*EgW +: EgW] = rg_er[c*EoW +: EgW];
-      assign rg_edges[3*EgW + c*EgW +: EgW] = rg_et[c*EoW +: EgW];
-      assign rg_edges[c*EgW +: EgW]         = rg_eb[c*EoW +: EgW];
+      assign rg_edges[EdLeftO + c*EgW +: EgW]   = rg_el[c*EoW +: EgW];
+      assign rg_edges[EdRightO + c*EgW +: EgW]  = rg_er[c*EoW +: EgW];
+      assign rg_edges[EdTopO + c*EgW +: EgW]    = rg_et[c*EoW +: EgW];
+      assign rg_edges[EdBottomO + c*EgW +: EgW] = rg_eb[c*EoW +: EgW];
       wire unused_high = ^{rg_el[c*EoW+EgW +: EoW-EgW], rg_er[c*EoW+EgW +: EoW-EgW],
                            rg_et[c*EoW+EgW +: EoW-EgW], rg_eb[c*EoW+EgW +: EoW-EgW]};
     end
   endgenerate
 
-  // Segment descriptor fields.
-  wire [SegW-1:0]     sd    = rg_tag[SegW-1:0];
-  wire [ItW-1:0]      rg_it = rg_tag[ItW+SegW-1 -: ItW];
-  wire                sd_tex  = sd[SegW-1];
-  wire [PrimW-1:0]    sd_prim = sd[SbW-1 -: PrimW];
-  wire [3*CoordW-1:0] sd_p1   = sd[SbW-PrimW-1 -: 3*CoordW];
-  wire [3*DW-1:0]     sd_d    = sd[SbW-PrimW-3*CoordW-1 -: 3*DW];
-  wire [3*CoordW-1:0] sd_c0   = sd[SbW-PrimW-3*CoordW-3*DW-1 -: 3*CoordW];
-  wire [R2W-1:0]      sd_r2   = sd[SbW-PrimW-6*CoordW-3*DW-1 -: R2W];
-  wire [L2W-1:0]      sd_l2   = sd[SbW-PrimW-6*CoordW-3*DW-R2W-1 -: L2W];
-  wire [InvW-1:0]     sd_invm = sd[SbW-PrimW-6*CoordW-3*DW-R2W-L2W-1 -: InvW];
-  wire [6:0]          sd_invs = sd[2*GdW+6 -: 7];
-  wire [2*GdW-1:0]    sd_g    = sd[2*GdW-1:0];
+  // Segment descriptor fields (rpu_seg_desc.vh).
+  wire [SegW-1:0]     sd      = rg_tag[0 +: SegW];
+  wire [ItW-1:0]      rg_it   = rg_tag[SegW +: ItW];
+  wire                sd_tex  = sd[SegTexO];
+  wire [PrimW-1:0]    sd_prim = sd[SegPrimO +: SegPrimW];
+  wire [SegP1W-1:0]   sd_p1   = sd[SegP1O +: SegP1W];
+  wire [SegDW-1:0]    sd_d    = sd[SegDO +: SegDW];
+  wire [SegC0W-1:0]   sd_c0   = sd[SegC0O +: SegC0W];
+  wire [SegR2W-1:0]   sd_r2   = sd[SegR2O +: SegR2W];
+  wire [SegL2W-1:0]   sd_l2   = sd[SegL2O +: SegL2W];
+  wire [SegInvMW-1:0] sd_invm = sd[SegInvMO +: SegInvMW];
+  wire [SegInvSW-1:0] sd_invs = sd[SegInvSO +: SegInvSW];
+  wire [2*GdW-1:0]    sd_g    = sd[SegG2O +: 2 * GdW];     // {g1, g2}
 
   // ---- sphere unit ----
-  localparam integer SphTagW = ItW + PrimW + 3*CoordW + 3*DW + L2W + 2*GdW + EdgW;
   wire             sp_valid, sp_pred1, sp_ovf;
   wire [CoordW+3:0] sp_tc_unused;
   wire [CoordW+2:0] sp_hc_unused;
   wire [3*CoordW-1:0] sp_a, sp_b_unused;
-  wire [3*DW-1:0]  sp_ab;
+  wire [SegDW-1:0] sp_ab;
   wire [TW-1:0]    sp_alpha, sp_beta;
   wire [SphTagW-1:0] sp_tag;
   rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
@@ -209,17 +206,16 @@ module rpu_top #(
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
     .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
     .ovf_o(sp_ovf), .tag_o(sp_tag));
-  wire [ItW-1:0]      s_it    = sp_tag[SphTagW-1 -: ItW];
-  wire [PrimW-1:0]    s_prim  = sp_tag[SphTagW-ItW-1 -: PrimW];
-  wire [3*CoordW-1:0] s_p1    = sp_tag[SphTagW-ItW-PrimW-1 -: 3*CoordW];
-  wire [3*DW-1:0]     s_d     = sp_tag[SphTagW-ItW-PrimW-3*CoordW-1 -: 3*DW];
-  wire [L2W-1:0]      s_l2    = sp_tag[SphTagW-ItW-PrimW-3*CoordW-3*DW-1 -: L2W];
-  wire [GdW-1:0]      s_g1    = sp_tag[EdgW+2*GdW-1 -: GdW];
-  wire [GdW-1:0]      s_g2    = sp_tag[EdgW+GdW-1 -: GdW];
-  wire [EdgW-1:0]     s_edges = sp_tag[EdgW-1:0];
+  wire [ItW-1:0]      s_it    = sp_tag[SpItO +: ItW];
+  wire [PrimW-1:0]    s_prim  = sp_tag[SpPrimO +: PrimW];
+  wire [SegP1W-1:0]   s_p1    = sp_tag[SpP1O +: SegP1W];
+  wire [SegDW-1:0]    s_d     = sp_tag[SpDO +: SegDW];
+  wire [SegL2W-1:0]   s_l2    = sp_tag[SpL2O +: SegL2W];
+  wire [GdW-1:0]      s_g1    = sp_tag[SpGO + GdW +: GdW];
+  wire [GdW-1:0]      s_g2    = sp_tag[SpGO +: GdW];
+  wire [EdgW-1:0]     s_edges = sp_tag[SpEdgesO +: EdgW];
 
   // ---- the K-step process ----
-  localparam integer IpCtxW = ItW + PrimW + 2 + EdgW;
   wire             ip_ready_unused, ip_valid, ip_ovf;
   wire [StW-1:0]   ip_state;
   wire [IpCtxW-1:0] ip_ctx;
@@ -227,24 +223,24 @@ module rpu_top #(
            .Metric(Metric), .Unrolled(Unrolled), .FifoLog2(FifoLog2), .CtxW(IpCtxW)) u_ip (
     .clk_i, .rst_ni, .valid_i(sp_valid), .ready_o(ip_ready_unused), .a_i(sp_a), .ab_i(sp_ab),
     .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(s_p1), .d_i(s_d), .l2_i(s_l2),
-    .mode1_i(s_g1[GdW-1 -: 2]), .h1_i(s_g1[GdW-3 -: HW]), .a1_i(s_g1[GdW-HW-3 -: CoordW]),
-    .b1_i(s_g1[3*UW+TFrac-1 -: TFrac]), .u1_i(s_g1[3*UW-1:0]),
-    .mode2_i(s_g2[GdW-1 -: 2]), .h2_i(s_g2[GdW-3 -: HW]), .a2_i(s_g2[GdW-HW-3 -: CoordW]),
-    .b2_i(s_g2[3*UW+TFrac-1 -: TFrac]), .u2_i(s_g2[3*UW-1:0]),
+    .mode1_i(s_g1[GdModeO +: GdModeW]), .h1_i(s_g1[GdHO +: GdHW]), .a1_i(s_g1[GdAO +: GdAW]),
+    .b1_i(s_g1[GdBO +: GdBW]), .u1_i(s_g1[GdUO +: GdUW]),
+    .mode2_i(s_g2[GdModeO +: GdModeW]), .h2_i(s_g2[GdHO +: GdHW]), .a2_i(s_g2[GdAO +: GdAW]),
+    .b2_i(s_g2[GdBO +: GdBW]), .u2_i(s_g2[GdUO +: GdUW]),
     .ctx_i({s_it, s_prim, sp_pred1, sp_ovf, s_edges}),
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
   // The credit count keeps rpu_ip's own start FIFO (same depth) from ever filling: ready is 1.
-  wire unused_md = ^ip_state[2*MdW-1:0];
+  wire unused_md = ^ip_state[IsMdO +: 2 * MdW];
   wire unused_ip = ^{ip_ready_unused, sp_tc_unused, sp_hc_unused, sp_b_unused, rg_v_unused};
 
-  wire [ItW-1:0]   i_it    = ip_ctx[IpCtxW-1 -: ItW];
-  wire [PrimW-1:0] i_prim  = ip_ctx[IpCtxW-ItW-1 -: PrimW];
-  wire             i_pred1 = ip_ctx[EdgW+1];
-  wire             i_sovf  = ip_ctx[EdgW];
-  wire [EdgW-1:0]  i_edges = ip_ctx[EdgW-1:0];
-  wire [N-1:0]     i_tau   = ip_state[StW-1 -: N];
-  wire [TW-1:0]    i_t     = ip_state[StW-N-1 -: TW];
-  wire [3*XW-1:0]  i_x     = ip_state[StW-N-TW-1 -: 3*XW];
+  wire [ItW-1:0]   i_it    = ip_ctx[IcItO +: ItW];
+  wire [PrimW-1:0] i_prim  = ip_ctx[IcPrimO +: PrimW];
+  wire             i_pred1 = ip_ctx[IcPred1O];
+  wire             i_sovf  = ip_ctx[IcOvfO];
+  wire [EdgW-1:0]  i_edges = ip_ctx[IcEdgesO +: EdgW];
+  wire [N-1:0]     i_tau   = ip_state[IsTauO +: N];
+  wire [TW-1:0]    i_t     = ip_state[IsTO +: TW];
+  wire [3*XW-1:0]  i_x     = ip_state[IsXO +: 3 * XW];
   // As the model: without pred_1 the pair is background and τ, t, X are zero; overflow counts
   // the sphere unit always and the IP only for pairs that ran it.
   wire             r_ovf   = i_sovf | (i_pred1 & ip_ovf);
@@ -253,45 +249,42 @@ module rpu_top #(
   wire [3*XW-1:0]  r_x     = i_pred1 ? i_x : {3*XW{1'b0}};
 
   // ---- capture ----
-  localparam integer CapTagW = ItW + PrimW + 2 + N + TW + 3*XW;
   wire              cp_valid, cp_hit, cp_tok_unused;
   wire [3:0]        cp_signs_unused;
   wire [DepthW-1:0] cp_depth;
   wire [CapTagW-1:0] cp_tag;
   rpu_capture #(.CoordW(CoordW), .TFrac(TFrac), .EdgeFrac(EdgeFrac), .TagW(CapTagW)) u_capture (
     .clk_i, .rst_ni, .valid_i(ip_valid), .x_i(r_x), .t_i(r_t), .eye_i(cam_eye),
-    .e_left_i(i_edges[EdgW-1 -: 3*EgW]), .e_right_i(i_edges[9*EgW-1 -: 3*EgW]),
-    .e_top_i(i_edges[6*EgW-1 -: 3*EgW]), .e_bottom_i(i_edges[3*EgW-1:0]), .w_i(cam_w),
+    .e_left_i(i_edges[EdLeftO +: CamEW]), .e_right_i(i_edges[EdRightO +: CamEW]),
+    .e_top_i(i_edges[EdTopO +: CamEW]), .e_bottom_i(i_edges[EdBottomO +: CamEW]), .w_i(cam_w),
     .tag_i({i_it, i_prim, i_pred1, r_ovf, r_tau, r_t, r_x}),
     .valid_o(cp_valid), .hit_o(cp_hit), .t_in_range_o(cp_tok_unused), .signs_o(cp_signs_unused),
     .depth_o(cp_depth), .tag_o(cp_tag));
   wire unused_cp = ^{cp_tok_unused, cp_signs_unused};
-  wire c_pred1 = cp_tag[CapTagW-ItW-PrimW-1];
+  wire c_pred1 = cp_tag[CtPred1O];
 
   // ---- texture path: ray/plane point, then the coverage test ----
-  localparam integer TxDescW = PrimW + 3*CoordW + 3*DW + L2W + InvW + 7 + 2*GdW + W02W;
   wire             rp_valid, rp_p0_valid;
   wire [3*CoordW-1:0] rp_p0;
   wire [DepthW-1:0] rp_depth;
-  wire [ItW+TxDescW-1:0] rp_tag;
+  wire [RpTagW-1:0] rp_tag;
   rpu_ray_plane #(.CoordW(CoordW), .DirFrac(DirFrac), .EdgeFrac(EdgeFrac),
-                  .TagW(ItW + TxDescW)) u_ray_plane (
+                  .TagW(RpTagW)) u_ray_plane (
     .clk_i, .rst_ni, .valid_i(rg_valid && sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
     .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2}),
     .valid_o(rp_valid), .p0_valid_o(rp_p0_valid), .p0_o(rp_p0), .depth_o(rp_depth),
     .tag_o(rp_tag));
-  wire [ItW-1:0]      x_it   = rp_tag[ItW+TxDescW-1 -: ItW];
-  wire [PrimW-1:0]    x_prim = rp_tag[TxDescW-1 -: PrimW];
-  wire [3*CoordW-1:0] x_p1   = rp_tag[TxDescW-PrimW-1 -: 3*CoordW];
-  wire [3*DW-1:0]     x_d    = rp_tag[TxDescW-PrimW-3*CoordW-1 -: 3*DW];
-  wire [L2W-1:0]      x_l2   = rp_tag[TxDescW-PrimW-3*CoordW-3*DW-1 -: L2W];
-  wire [InvW-1:0]     x_invm = rp_tag[W02W+2*GdW+7+InvW-1 -: InvW];
-  wire [6:0]          x_invs = rp_tag[W02W+2*GdW+6 -: 7];
-  wire [GdW-1:0]      x_g1   = rp_tag[W02W+2*GdW-1 -: GdW];
-  wire [GdW-1:0]      x_g2   = rp_tag[W02W+GdW-1 -: GdW];
-  wire [W02W-1:0]     x_w02  = rp_tag[W02W-1:0];
+  wire [ItW-1:0]      x_it   = rp_tag[RpItO +: ItW];
+  wire [PrimW-1:0]    x_prim = rp_tag[RpPrimO +: PrimW];
+  wire [SegP1W-1:0]   x_p1   = rp_tag[RpP1O +: SegP1W];
+  wire [SegDW-1:0]    x_d    = rp_tag[RpDO +: SegDW];
+  wire [SegL2W-1:0]   x_l2   = rp_tag[RpL2O +: SegL2W];
+  wire [SegInvMW-1:0] x_invm = rp_tag[RpInvMO +: SegInvMW];
+  wire [SegInvSW-1:0] x_invs = rp_tag[RpInvSO +: SegInvSW];
+  wire [GdW-1:0]      x_g1   = rp_tag[RpGO + GdW +: GdW];
+  wire [GdW-1:0]      x_g2   = rp_tag[RpGO +: GdW];
+  wire [SegR2W-1:0]   x_w02  = rp_tag[RpW02O +: SegR2W];
 
-  localparam integer TxTagW = ItW + PrimW + 1 + DepthW;
   wire             tx_valid, tx_covers, tx_ovf, tx_pr1_unused, tx_pr2_unused, tx_pr3_unused;
   wire [TW-1:0]    tx_t;
   wire [3*XW-1:0]  tx_x;
@@ -300,23 +293,22 @@ module rpu_top #(
                 .SqrtW(SqrtW), .TagW(TxTagW)) u_texture (
     .clk_i, .rst_ni, .valid_i(rp_valid), .p0_i(rp_p0), .p1_i(x_p1), .d_i(x_d), .l2_i(x_l2),
     .inv_m_i(x_invm), .inv_s_i(x_invs),
-    .mode1_i(x_g1[GdW-1 -: 2]), .h1_i(x_g1[GdW-3 -: HW]), .a1_i(x_g1[GdW-HW-3 -: CoordW]),
-    .b1_i(x_g1[3*UW+TFrac-1 -: TFrac]), .u1_i(x_g1[3*UW-1:0]),
-    .mode2_i(x_g2[GdW-1 -: 2]), .h2_i(x_g2[GdW-3 -: HW]), .a2_i(x_g2[GdW-HW-3 -: CoordW]),
-    .b2_i(x_g2[3*UW+TFrac-1 -: TFrac]), .u2_i(x_g2[3*UW-1:0]), .w0_2_i(x_w02),
+    .mode1_i(x_g1[GdModeO +: GdModeW]), .h1_i(x_g1[GdHO +: GdHW]), .a1_i(x_g1[GdAO +: GdAW]),
+    .b1_i(x_g1[GdBO +: GdBW]), .u1_i(x_g1[GdUO +: GdUW]),
+    .mode2_i(x_g2[GdModeO +: GdModeW]), .h2_i(x_g2[GdHO +: GdHW]), .a2_i(x_g2[GdAO +: GdAW]),
+    .b2_i(x_g2[GdBO +: GdBW]), .u2_i(x_g2[GdUO +: GdUW]), .w0_2_i(x_w02),
     .tag_i({x_it, x_prim, rp_p0_valid, rp_depth}),
     .valid_o(tx_valid), .pr1_o(tx_pr1_unused), .pr2_o(tx_pr2_unused), .pr3_o(tx_pr3_unused),
     .covers_o(tx_covers), .t_o(tx_t), .x_o(tx_x), .ovf_o(tx_ovf), .tag_o(tx_tag));
   wire unused_tx = ^{tx_pr1_unused, tx_pr2_unused, tx_pr3_unused};
-  wire [ItW-1:0]    t_it    = tx_tag[TxTagW-1 -: ItW];
-  wire [PrimW-1:0]  t_prim  = tx_tag[TxTagW-ItW-1 -: PrimW];
-  wire              t_p0ok  = tx_tag[DepthW];
-  wire [DepthW-1:0] t_depth = tx_tag[DepthW-1:0];
+  wire [ItW-1:0]    t_it    = tx_tag[TtItO +: ItW];
+  wire [PrimW-1:0]  t_prim  = tx_tag[TtPrimO +: PrimW];
+  wire              t_p0ok  = tx_tag[TtP0OkO];
+  wire [DepthW-1:0] t_depth = tx_tag[TtDepthO +: DepthW];
 
   // ---- output FIFOs: curve and texture results, merged in input order ----
   // Result record: {item, texture, primitive, pred_1, ovf, τ, t, X, hit, depth}.
-  localparam integer ResW = ItW + 1 + PrimW + 2 + N + TW + 3*XW + 1 + DepthW;
-  wire [ResW-1:0] cres = {cp_tag[CapTagW-1 -: ItW], 1'b0, cp_tag[CapTagW-ItW-1:0],
+  wire [ResW-1:0] cres = {cp_tag[CtItO +: ItW], 1'b0, cp_tag[0 +: RsCtxW],
                           c_pred1 & cp_hit, c_pred1 ? cp_depth : {DepthW{1'b0}}};
   // As the model: a ray that misses the plane (or leaves the range) tests nothing: the result
   // is all zero; otherwise covers, t̂, X, the unit's overflow bit, and the ray/plane depth.
@@ -340,7 +332,7 @@ module rpu_top #(
     .rd_valid_o(t_valid), .rd_ready_i(pop && head_tex), .rd_data_o(t_data));
   rpu_fifo #(.Width(1), .Log2Depth(FifoLog2)) u_order_fifo (
     .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(o_wr_ready_unused),
-    .wr_data_i(seg_q[SegW-1]), .rd_valid_o(o_valid), .rd_ready_i(pop), .rd_data_o(head_tex));
+    .wr_data_i(seg_q[SegTexO]), .rd_valid_o(o_valid), .rd_ready_i(pop), .rd_data_o(head_tex));
   wire unused_fifo = ^{c_wr_ready_unused, t_wr_ready_unused, o_wr_ready_unused};
   wire [ResW-1:0] head = head_tex ? t_data : c_data;
   // A result leaves when the consumer and the pixel resolve both take it.
@@ -355,7 +347,7 @@ module rpu_top #(
     .last_i(res_last_o), .hit_i(res_hit_o), .depth_i(res_depth_o), .primitive_i(res_prim_o),
     .valid_o(pix_valid_o), .ready_i(pix_ready_i), .pixel_o(pix_ji), .any_hit_o(pix_hit_o),
     .depth_o(pix_depth_o), .primitive_o(pix_prim_o));
-  assign pix_j_o = pix_ji[2*IdxW-1 -: IdxW];
+  assign pix_j_o = pix_ji[IdxW +: IdxW];
   assign pix_i_o = pix_ji[IdxW-1:0];
 
 `ifdef FORMAL

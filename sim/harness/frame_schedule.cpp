@@ -36,6 +36,7 @@ ItemResult curve_result(const ref::PairResult& r) {
 
 }  // namespace
 
+// The camera register in the layout of rtl/top/rpu_cam_desc.vh, most significant field first.
 Bits pack_camera(const ref::HwParams& p, const ref::CameraDesc& c) {
   const TopWidths w(p);
   Concat cam;
@@ -50,6 +51,8 @@ Bits pack_camera(const ref::HwParams& p, const ref::CameraDesc& c) {
   return cam.bits();
 }
 
+// A segment descriptor in the layout of rtl/top/rpu_seg_desc.vh (its guides: rtl/curve/
+// rpu_guide_desc.vh), most significant field first.
 Bits pack_segment(const ref::HwParams& p, const ref::SegmentDesc& s, bool texture) {
   const TopWidths w(p);
   Concat d;

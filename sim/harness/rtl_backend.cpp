@@ -29,13 +29,8 @@ namespace rpu::sim {
 
 namespace {
 
-std::string describe(const ref::HwParams& p) {
-  return fmt::format("n {} n1 {} coord_w {} dir_frac {} t_frac {} unit_frac {} edge_frac {} "
-                     "inv_w {} sqrt_w {} metric {} ip {}", p.n, p.n1, p.coord_w, p.dir_frac,
-                     p.t_frac, p.unit_frac, p.edge_frac, p.inv_w, p.sqrt_w,
-                     p.metric == ref::Metric::kAbs ? "abs" : "squared",
-                     p.unrolled ? "unrolled" : "iterative");
-}
+// Every parameter of the table, "n 16 n1 2 ... surf_w 24 angle_w 20".
+std::string describe(const ref::HwParams& p) { return p.summary(); }
 
 std::filesystem::path self_dir() {
   std::error_code ec;

@@ -10,15 +10,13 @@ ref::HwParams systemc_params() {
   return p;
 }
 
+// Every width is a named function of HwParams (model/hw_params.h), the one place that restates
+// rpu_top.v's derived parameters.
 TopWidths::TopWidths(const ref::HwParams& p)
-    : CW(p.coord_w), DW(p.coord_w + 1), TW(p.t_w()), UW(p.unit_w()), XW(p.coord_w + 3),
-      HW(p.coord_w + 5), VgW(4 + p.dir_frac + ref::HwParams::kRayGuard), EgW(p.edge_w()),
-      R2W(2 * p.coord_w + 1), L2W(2 * p.coord_w + 3), N(p.n) {
-  GdW = 2 + HW + CW + p.t_frac + 3 * UW;
-  CamW = 9 * VgW + 12 * EgW + 3 * CW;
-  SegW = 1 + kPrimW + 3 * CW + 3 * DW + 3 * CW + R2W + L2W + p.inv_w + 7 + 2 * GdW;
-  DepthW = CW + 4 + EgW + 2;
-}
+    : CW(p.coord_w), DW(p.diff_w()), TW(p.t_w()), UW(p.unit_w()), XW(p.point_w()),
+      HW(p.guide_h_w()), VgW(p.ray_dir_w()), EgW(p.edge_w()), R2W(p.r2_w()), L2W(p.l2_w()),
+      GdW(p.guide_desc_w()), CamW(p.camera_desc_w()), SegW(p.segment_desc_w(kPrimW)),
+      DepthW(p.depth_w()), N(p.n) {}
 
 bool ItemResult::operator==(const ItemResult& o) const {
   return id == o.id && i == o.i && j == o.j && seg == o.seg && last == o.last &&

@@ -2,6 +2,9 @@
 
 #include <cstring>
 #include <fstream>
+#include <string_view>
+
+#include <fmt/format.h>
 
 #include "common/error.h"
 
@@ -31,6 +34,10 @@ class Writer {
   void bits(const Bits& b) {
     u32(static_cast<std::uint32_t>(b.width()));
     for (auto w : b.words()) u32(w);
+  }
+  void text(std::string_view s) {
+    u32(static_cast<std::uint32_t>(s.size()));
+    out_.write(s.data(), static_cast<std::streamsize>(s.size()));
   }
   void close() {
     out_.close();
@@ -75,6 +82,13 @@ class Reader {
     for (auto& x : b.words()) x = u32();
     return b;
   }
+  std::string text() {
+    const std::uint32_t n = u32();
+    if (n > 256) throw Error(path_, "corrupt string length");
+    std::string s(n, '\0');
+    get(s.data(), n);
+    return s;
+  }
   std::uint32_t count(std::uint32_t max) {
     const std::uint32_t n = u32();
     if (n > max) throw Error(path_, "corrupt record count");
@@ -90,18 +104,36 @@ class Reader {
   std::ifstream in_;
 };
 
+// The hardware parameters: the format version, their count, then each as its key (the reader
+// checks it is its own table's, in order) and its value as an int, in the table's order
+// (ref/model/hw_params.def).
 void put_params(Writer& w, const ref::HwParams& p) {
-  for (int v : {p.n, p.n1, p.coord_w, p.dir_frac, p.t_frac, p.unit_frac, p.edge_frac, p.inv_w,
-                p.sqrt_w, p.metric == ref::Metric::kSquared ? 1 : 0, p.unrolled ? 1 : 0})
-    w.u32(static_cast<std::uint32_t>(v));
+  w.u32(kJobFileVersion);
+  const auto& table = ref::hw_param_table();
+  w.u32(static_cast<std::uint32_t>(table.size()));
+  for (const ref::HwParamInfo& d : table) {
+    w.text(d.key);
+    w.u32(static_cast<std::uint32_t>(d.get(p)));
+  }
 }
-ref::HwParams get_params(Reader& r) {
+ref::HwParams get_params(Reader& r, const std::string& path) {
+  const std::uint32_t version = r.u32();
+  if (version != kJobFileVersion)
+    throw Error(path, fmt::format("job file format {}, this program reads format {} (written by "
+                                  "another version of rpu)", version, kJobFileVersion));
+  const auto& table = ref::hw_param_table();
+  const std::uint32_t count = r.u32();
+  if (count != table.size())
+    throw Error(path, fmt::format("the job file has {} hardware parameters, this program {} "
+                                  "(written by another version of rpu)", count, table.size()));
   ref::HwParams p;
-  for (int* v : {&p.n, &p.n1, &p.coord_w, &p.dir_frac, &p.t_frac, &p.unit_frac, &p.edge_frac,
-                 &p.inv_w, &p.sqrt_w})
-    *v = static_cast<int>(r.u32());
-  p.metric = r.u32() ? ref::Metric::kSquared : ref::Metric::kAbs;
-  p.unrolled = r.u32() != 0;
+  for (const ref::HwParamInfo& d : table) {
+    const std::string key = r.text();
+    if (key != d.key)
+      throw Error(path, fmt::format("the job file has hardware parameter '{}' where this program "
+                                    "has '{}' (written by another version of rpu)", key, d.key));
+    d.set(p, static_cast<int>(r.u32()));
+  }
   return p;
 }
 
@@ -132,7 +164,7 @@ FrameSchedule read_job(const std::string& path) {
   Reader r(path);
   if (r.u32() != kJobMagic) throw Error(path, "not an rpu co-simulation job file");
   FrameSchedule f;
-  f.params = get_params(r);
+  f.params = get_params(r, path);
   f.width = static_cast<int>(r.u32());
   f.height = static_cast<int>(r.u32());
   f.camera = r.bits();

@@ -3,6 +3,7 @@
 // order, with the cycle counts). Binary, little-endian, versioned; read errors name the file.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,11 @@ struct StreamRecord {
   std::vector<PixelResult> pixels;
   CosimStats stats;
 };
+
+// The job file's format: 2 carries every hardware parameter of the table by key (1, without a
+// version, carried n ... ip by position). Also part of the names of the co-simulation
+// executables `rpu sweep` builds (app/sweep_cosim_build.cpp).
+inline constexpr std::uint32_t kJobFileVersion = 2;
 
 void write_job(const std::string& path, const FrameSchedule& f);
 // Reads camera, segments, items, width, height and params (expected values are not stored).

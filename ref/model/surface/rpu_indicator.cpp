@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_indicator.v (to be written from this twin)
+// Twin of rtl/surface/rpu_indicator.v
 #include "model/surface/rpu_indicator.h"
 
 #include "model/surface/surface_descriptors.h"

@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_indicator.v (to be written from this twin)
+// Twin of rtl/surface/rpu_indicator.v
 // Indicator unit: the inside bit of one candidate point in the surface's local frame, for every
 // primitive type (docs/surfaces.md, "The indicators"), integers only. Angles are binary angles
 // (AW bits = one turn) from the CORDIC (rpu_cordic.h): ψ and ρ by vectoring, sines and the

@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_surface_ip.v (to be written from this twin)
+// Twin of rtl/surface/rpu_surface_ip.v
 #include "model/surface/rpu_surface_ip.h"
 
 #include "model/surface/rpu_indicator.h"

@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_surface_ip.v (to be written from this twin)
+// Twin of rtl/surface/rpu_surface_ip.v
 // The K-step sign search of the indicator on one piece (docs/surfaces.md, "The iterative process
 // on a piece"): τ is an n-bit dyadic index m (τ = m·2^-n); step k evaluates the candidates
 // τ_{k−1} + j·2^-(n1·k), j = 0..J, of which J − 1 are new (the ends are the previous interval's),

@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_surface_setup.v (to be written from this twin)
+// Twin of rtl/surface/rpu_surface_setup.v
 #include "model/surface/rpu_surface_setup.h"
 
 #include <algorithm>

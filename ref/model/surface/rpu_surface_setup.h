@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_surface_setup.v (to be written from this twin)
+// Twin of rtl/surface/rpu_surface_setup.v
 // Surface setup unit: one work item is (pixel ray, surface, piece index). The bounding-sphere
 // interval [A, B] (the curves' sphere unit with d = 0), A and B in the surface's local frame, the
 // cuts at the range boundaries (docs/surfaces.md, "Ranges"), and the requested piece as its own

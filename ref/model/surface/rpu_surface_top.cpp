@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_surface_top.v (to be written from this twin)
+// Twin of rtl/surface/rpu_surface_top.v
 #include "model/surface/rpu_surface_top.h"
 
 #include "model/surface/rpu_surface_ip.h"

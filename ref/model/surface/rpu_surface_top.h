@@ -1,4 +1,4 @@
-// Twin of rtl/surface/rpu_surface_top.v (to be written from this twin)
+// Twin of rtl/surface/rpu_surface_top.v
 // One surface work item (pixel ray, surface, piece) through the surface path: rpu_surface_setup,
 // rpu_surface_ip (its candidates through rpu_indicator), then the hit point X = pr(τ_K) in world
 // LSB and its depth (X − h)·W in the format of rpu_capture's depth, so that rpu_resolve orders

@@ -1,0 +1,20 @@
+// Derived widths of the datapath, one formula each (docs/fixed-point.md, "Parameters"; the C++
+// twins have the same formulas as HwParams functions). A module declares the ones it uses as
+// derived parameters, e.g.  parameter integer TW = `RPU_TW(TFrac),  so a width is written once
+// here and nowhere else.
+`define RPU_TW(tfrac)        ((tfrac) + 3)          // t, α, β, w: Q(3.FT)
+`define RPU_DW(coordw)       ((coordw) + 1)         // differences of positions: d, A − p1, B − A
+`define RPU_UW(unitfrac)     ((unitfrac) + 2)       // guide unit vectors u_k: Q(2.FU)
+`define RPU_HW(coordw)       ((coordw) + 5)         // guide height h (h ≤ 16·L)
+`define RPU_L2W(coordw)      (2 * (coordw) + 3)     // L² = |d|²
+`define RPU_R2W(coordw)      (2 * (coordw) + 1)     // R² of the interpolation sphere, w0²
+`define RPU_XW(coordw)       ((coordw) + 3)         // curve point X
+`define RPU_PRW(coordw)      ((coordw) + 2)         // ray point pr
+`define RPU_VW(dirfrac)      (4 + (dirfrac))        // unnormalised direction v: Q(4.FV)
+`define RPU_VHATW(dirfrac)   (2 + (dirfrac))        // unit direction v̂: Q(2.FV)
+`define RPU_VGW(dirfrac)     (4 + (dirfrac) + 14)   // v with the ray generator's 14 guard bits
+`define RPU_EGW(edgefrac)    (4 + (edgefrac) + 14)  // PVP edge vectors: Q(4.FE+14)
+`define RPU_GRADW(coordw)    (2 * (coordw) + 10)    // guide radicand h² + L²·w
+`define RPU_MD2W(coordw)     (2 * (coordw) + 8)     // |pr − X|² (dist_radicand_w)
+`define RPU_DEPTHW(coordw, edgefrac) ((coordw) + 4 + `RPU_EGW(edgefrac) + 2)  // depth c = (X − h)·W
+
