@@ -17,7 +17,11 @@
 
 // common: the shared arithmetic blocks
 common/rpu_fifo.v
+common/rpu_stage.v
+common/rpu_delay.v
+common/rpu_add3.v
 common/rpu_mul.v
+common/rpu_mul_vec.v
 // header: common/rpu_mul_latency.vh
 // header: common/rpu_widths.vh
 common/rpu_sqrt.v
@@ -34,21 +38,25 @@ curve/rpu_ip_step.v
 curve/rpu_ip.v
 curve/rpu_capture.v
 // header: curve/rpu_guide_desc.vh
+// header: curve/rpu_ip_params.vh
+// header: curve/rpu_ip_derived.vh
 
 // texture: the texture path
 texture/rpu_ray_plane.v
 texture/rpu_texture.v
 
 // surface: the vector-described surfaces
+surface/rpu_surface_vsub.v
 surface/rpu_indicator.v
-surface/rpu_indicator_add3.v
-surface/rpu_indicator_delay.v
 surface/rpu_surface_setup.v
 surface/rpu_surface_ip.v
 surface/rpu_surface_ip_step.v
 surface/rpu_surface_top.v
 surface/rpu_surface_admit.v
 // header: surface/rpu_surface_desc.vh
+// header: surface/rpu_surface_ind_ports.vh
+// header: surface/rpu_surface_ip_params.vh
+// header: surface/rpu_surface_setup_ports.vh
 // header: surface/rpu_surface_latency.vh
 
 // top: ray generation, the pixel resolve, the top level

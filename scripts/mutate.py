@@ -51,7 +51,7 @@ class Family:
 
 
 # The plan: every RTL module, with the testbench that checks it against its twin. A module that
-# lives only inside another (rpu_indicator_add3/delay, rpu_surface_admit) is mutated in place in
+# lives only inside another (rpu_add3/delay, rpu_surface_admit) is mutated in place in
 # its parent's testbench; rpu_top's own logic (credits, FIFO merge, resolve hookup) runs the
 # co-simulation frame (tb_rpu_top: every work item and pixel against the model).
 PLAN = [
@@ -73,8 +73,8 @@ PLAN = [
     Family("rpu_texture", "tb_rpu_texture", 60),
     Family("rpu_cordic", "tb_rpu_cordic_w8_vec", 50),
     Family("rpu_indicator", "tb_rpu_indicator", 80),
-    Family("rpu_indicator_add3", "tb_rpu_indicator", 10),
-    Family("rpu_indicator_delay", "tb_rpu_indicator", 10),
+    Family("rpu_add3", "tb_rpu_indicator", 10),
+    Family("rpu_delay", "tb_rpu_indicator", 10),
     Family("rpu_surface_setup", "tb_rpu_surface_setup", 80),
     Family("rpu_top", "tb_rpu_top", 80),
 ]
@@ -89,7 +89,7 @@ PLAN = [
 # dispositioned again).
 RECORDED_ORDER = {
     "tb_rpu_guide_pair": ["rpu_sqrt", "rpu_guide_pair", "rpu_mul"],
-    "tb_rpu_indicator": ["rpu_indicator", "rpu_indicator_add3", "rpu_indicator_delay", "rpu_cordic",
+    "tb_rpu_indicator": ["rpu_indicator", "rpu_add3", "rpu_delay", "rpu_cordic",
                          "rpu_mul"],
 }
 

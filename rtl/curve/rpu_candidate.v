@@ -11,21 +11,11 @@
 `include "rpu_widths.vh"
 
 module rpu_candidate #(
-  parameter integer CoordW   = 24,  // position width (12..40)
-  parameter integer TFrac    = 24,  // fraction bits of t (8..48)
-  parameter integer UnitFrac = 16,  // fraction bits of u_k (8..40)
-  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
-  parameter integer N        = 16,  // result bits of τ (1..40)
+`include "rpu_ip_params.vh"
   parameter integer Metric   = 0,   // 0: md = |pr − X| (seed), 1: md = |pr − X|²
   parameter integer TagW     = 1,   // side-band bits (>= 1)
   // Derived (do not override).
-  parameter integer TW   = `RPU_TW(TFrac),           // t, α, β: Q(3.FT)
-  parameter integer DW   = `RPU_DW(CoordW),          // d, AB
-  parameter integer UW   = `RPU_UW(UnitFrac),        // u: Q(2.FU)
-  parameter integer HW   = `RPU_HW(CoordW),          // guide height h
-  parameter integer L2W  = `RPU_L2W(CoordW),      // L²
-  parameter integer RadW = `RPU_GRADW(CoordW),     // h² (guide_radicand_w)
-  parameter integer XW   = `RPU_XW(CoordW),          // X
+`include "rpu_ip_derived.vh"
   parameter integer PrW  = `RPU_PRW(CoordW),          // pr
   parameter integer Md2W = `RPU_MD2W(CoordW),      // |pr − X|² format (dist_radicand_w)
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : Md2W
@@ -101,11 +91,7 @@ module rpu_candidate #(
   assign {a_m, alpha_m, p1_m, d_m, l2_m, mode1_m, h1_m, hh1_m, a1_m, b1_m, u1_m,
           mode2_m, h2_m, hh2_m, a2_m, b2_m, u2_m, tag_m} = in_m;
 
-  reg                  valid_q1;
-  reg [3*PrW-1:0]      pr_q1;
-  reg [TW-1:0]         t_q1;
-  reg                  ovf_q1;
-  reg [TagW-1:0]       tag_q1;
+  wire [3*PrW-1:0] pr_m;
   genvar c;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_pr
@@ -116,8 +102,7 @@ module rpu_candidate #(
         .valid_o(v_unused), .p_o(prod), .tag_o(t_unused));
       wire signed [CoordW-1:0] ac   = a_m[c*CoordW +: CoordW];
       wire signed [DW+MW-1:0]  step = $signed(prod) >>> N;  // floor
-      wire signed [PrW-1:0]    prc  = {{(PrW-CoordW){ac[CoordW-1]}}, ac} + step[PrW-1:0];
-      always @(posedge clk_i) pr_q1[c*PrW +: PrW] <= prc;
+      assign pr_m[c*PrW +: PrW] = {{(PrW-CoordW){ac[CoordW-1]}}, ac} + step[PrW-1:0];
       wire unused_step = ^{step[DW+MW-1:PrW], v_unused, t_unused};
     end
   endgenerate
@@ -128,15 +113,7 @@ module rpu_candidate #(
   wire signed [TW+MW:0]   tmin  = {{(MW+1){1'b1}}, 1'b1, {(TW-1){1'b0}}};
   wire                    t_hi  = tsum > tmax;
   wire                    t_lo  = tsum < tmin;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q1 <= 1'b0;
-    else         valid_q1 <= mt_valid;
-  end
-  always @(posedge clk_i) begin
-    t_q1   <= t_hi ? tmax[TW-1:0] : t_lo ? tmin[TW-1:0] : tsum[TW-1:0];
-    ovf_q1 <= t_hi | t_lo;
-    tag_q1 <= tag_m;
-  end
+  wire [TW-1:0]           t_m   = t_hi ? tmax[TW-1:0] : t_lo ? tmin[TW-1:0] : tsum[TW-1:0];
 
   // ---- the two guides; the candidate's context (and the segment fields the curve point needs
   //      later) ride in the guide pair's tag ----
@@ -145,27 +122,26 @@ module rpu_candidate #(
   // The guide pair's tag, LSB first: {seg, pr, t, ovf, tag}; seg = {p1, d, u1, u2}.
   localparam integer GtPrO   = G1TagW - SegW - 3*PrW;
   localparam integer SegDO   = 6*UW;
-  reg [SegW-1:0] seg_q1;
-  reg [L2W-1:0]  l2_q1;
-  reg [1:0]      mode1_q1, mode2_q1;
-  reg [HW-1:0]   h1_q1, h2_q1;
-  reg [RadW-1:0] hh1_q1, hh2_q1;
-  reg [CoordW-1:0] a1_q1, a2_q1;
-  reg [TFrac-1:0]  b1_q1, b2_q1;
-  always @(posedge clk_i) begin
-    seg_q1   <= {p1_m, d_m, u1_m, u2_m};
-    l2_q1    <= l2_m;
-    mode1_q1 <= mode1_m;
-    h1_q1    <= h1_m;
-    hh1_q1   <= hh1_m;
-    a1_q1    <= a1_m;
-    b1_q1    <= b1_m;
-    mode2_q1 <= mode2_m;
-    h2_q1    <= h2_m;
-    hh2_q1   <= hh2_m;
-    a2_q1    <= a2_m;
-    b2_q1    <= b2_m;
-  end
+  localparam integer GdInW   = 2 + HW + RadW + CoordW + TFrac;  // one guide's fields
+  wire                  valid_q1;
+  wire [3*PrW-1:0]      pr_q1;
+  wire [TW-1:0]         t_q1;
+  wire                  ovf_q1;
+  wire [TagW-1:0]       tag_q1;
+  wire [SegW-1:0]       seg_q1;
+  wire [L2W-1:0]        l2_q1;
+  wire [1:0]            mode1_q1, mode2_q1;
+  wire [HW-1:0]         h1_q1, h2_q1;
+  wire [RadW-1:0]       hh1_q1, hh2_q1;
+  wire [CoordW-1:0]     a1_q1, a2_q1;
+  wire [TFrac-1:0]      b1_q1, b2_q1;
+  rpu_stage #(.W(3*PrW + TW + 1 + TagW + SegW + L2W + 2*GdInW)) u_q1 (
+    .clk_i, .rst_ni, .valid_i(mt_valid),
+    .d_i({pr_m, t_m, t_hi | t_lo, tag_m, p1_m, d_m, u1_m, u2_m, l2_m,
+          mode1_m, h1_m, hh1_m, a1_m, b1_m, mode2_m, h2_m, hh2_m, a2_m, b2_m}),
+    .valid_o(valid_q1),
+    .q_o({pr_q1, t_q1, ovf_q1, tag_q1, seg_q1, l2_q1,
+          mode1_q1, h1_q1, hh1_q1, a1_q1, b1_q1, mode2_q1, h2_q1, hh2_q1, a2_q1, b2_q1}));
   wire [G1TagW-1:0] g1_tag_out;
   wire              g1_valid, g_ovf;
   wire [GW-1:0]     g1, g2;
@@ -233,48 +209,34 @@ module rpu_candidate #(
     end
   endgenerate
   // Two adds, one register after each (a square is ≥ 0: its top bit is 0).
-  reg             valid_s;
-  reg [SqW-1:0]   s01_s;
-  reg [ExW-1:0]   ex_s;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_s <= 1'b0;
-    else         valid_s <= sq_valid;
-  end
-  always @(posedge clk_i) begin
-    s01_s <= {2'b00, sq[0]} + {2'b00, sq[1]};
-    ex_s  <= sq_tag;
-  end
+  wire            valid_s;
+  wire [SqW-1:0]  s01_s;
+  wire [ExW-1:0]  ex_s;
+  rpu_stage #(.W(SqW + ExW)) u_sum01 (
+    .clk_i, .rst_ni, .valid_i(sq_valid), .d_i({{2'b00, sq[0]} + {2'b00, sq[1]}, sq_tag}),
+    .valid_o(valid_s), .q_o({s01_s, ex_s}));
   // The full sum, registered; then the saturation to Md2W bits in a stage of its own (a 58-bit
   // carry chain and the saturating mux do not fit one 4 ns stage together).
-  reg             valid_f;
-  reg [SqW-1:0]   md2_f;
-  reg [ExW-1:0]   ex_f;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_f <= 1'b0;
-    else         valid_f <= valid_s;
-  end
-  always @(posedge clk_i) begin
-    md2_f <= s01_s + {2'b00, sq[2]};
-    ex_f  <= ex_s;
-  end
+  wire            valid_f;
+  wire [SqW-1:0]  md2_f;
+  wire [ExW-1:0]  ex_f;
+  rpu_stage #(.W(SqW + ExW)) u_sum (
+    .clk_i, .rst_ni, .valid_i(valid_s), .d_i({s01_s + {2'b00, sq[2]}, ex_s}),
+    .valid_o(valid_f), .q_o({md2_f, ex_f}));
   wire            md2_big  = |md2_f[SqW-1:Md2W];
-  reg             valid_q2;
-  reg [Md2W-1:0]  md2_q2;
-  reg             ovf_q2;
-  reg [3*XW-1:0]  x_q2;
-  reg [3*PrW-1:0] pr_q2;
-  reg [TW-1:0]    t_q2;
-  reg [TagW-1:0]  tag_q2;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q2 <= 1'b0;
-    else         valid_q2 <= valid_f;
-  end
-  always @(posedge clk_i) begin
-    md2_q2 <= md2_big ? {Md2W{1'b1}} : md2_f[Md2W-1:0];
-    {x_q2, pr_q2, t_q2} <= ex_f[ExW-1 -: 3*XW + 3*PrW + TW];
-    ovf_q2 <= ex_f[TagW] | md2_big;
-    tag_q2 <= ex_f[TagW-1:0];
-  end
+  wire            valid_q2;
+  wire [Md2W-1:0] md2_q2;
+  wire            ovf_q2;
+  wire [3*XW-1:0] x_q2;
+  wire [3*PrW-1:0] pr_q2;
+  wire [TW-1:0]   t_q2;
+  wire [TagW-1:0] tag_q2;
+  // ex = {X, pr, t, ovf, tag}
+  rpu_stage #(.W(Md2W + ExW)) u_sat (
+    .clk_i, .rst_ni, .valid_i(valid_f),
+    .d_i({md2_big ? {Md2W{1'b1}} : md2_f[Md2W-1:0], ex_f[ExW-1:TagW+1], ex_f[TagW] | md2_big,
+          ex_f[TagW-1:0]}),
+    .valid_o(valid_q2), .q_o({md2_q2, x_q2, pr_q2, t_q2, ovf_q2, tag_q2}));
 
   // ---- md: the square root (seed metric) or the square itself ----
   generate
@@ -294,13 +256,8 @@ module rpu_candidate #(
       assign ovf_o = out_tag[TagW];
       assign tag_o = out_tag[TagW-1:0];
     end else begin : g_squared
-      assign valid_o = valid_q2;
-      assign md_o    = md2_q2;
-      assign x_o     = x_q2;
-      assign pr_o    = pr_q2;
-      assign t_o     = t_q2;
-      assign ovf_o   = ovf_q2;
-      assign tag_o   = tag_q2;
+      assign {valid_o, md_o, x_o, pr_o, t_o, ovf_o, tag_o} =
+             {valid_q2, md2_q2, x_q2, pr_q2, t_q2, ovf_q2, tag_q2};
     end
   endgenerate
 endmodule

@@ -58,118 +58,73 @@ module rpu_capture #(
   end
 
   // ---- stage 1: q = X − h, t in [0, 2^FT] ----
-  reg              valid_q1;
-  reg [3*QW-1:0]   q_q1;
-  reg              t_ok_q1;
-  reg [5*3*EdgeW-1:0] e_q1;
-  reg [TagW-1:0]   tag_q1;
   wire signed [TFrac+2:0] t_s = t_i;
   wire signed [TFrac+2:0] one = {{2{1'b0}}, 1'b1, {TFrac{1'b0}}};
+  wire [3*QW-1:0] q;
   genvar c;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_q
       wire signed [XW-1:0]     xc = x_i[c*XW +: XW];
       wire signed [CoordW-1:0] hc = eye_i[c*CoordW +: CoordW];
-      wire signed [QW-1:0]     qc = {{(QW-XW){xc[XW-1]}}, xc} - {{(QW-CoordW){hc[CoordW-1]}}, hc};
-      always @(posedge clk_i) q_q1[c*QW +: QW] <= qc;
+      assign q[c*QW +: QW] = {{(QW-XW){xc[XW-1]}}, xc} - {{(QW-CoordW){hc[CoordW-1]}}, hc};
     end
   endgenerate
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q1 <= 1'b0;
-    else         valid_q1 <= valid_i;
-  end
-  always @(posedge clk_i) begin
-    t_ok_q1 <= (t_s >= 0) && (t_s <= one);
-    e_q1    <= {w_i, e_bottom_i, e_top_i, e_right_i, e_left_i};
-    tag_q1  <= tag_i;
-  end
+  wire                valid_q1;
+  wire [3*QW-1:0]     q_q1;
+  wire                t_ok_q1;
+  wire [15*EdgeW-1:0] e_q1;  // vector v (0 left, 1 right, 2 top, 3 bottom, 4 W), component c
+  wire [TagW-1:0]     tag_q1;
+  rpu_stage #(.W(3*QW + 1 + 15*EdgeW + TagW)) u_s1 (
+    .clk_i, .rst_ni, .valid_i,
+    .d_i({q, (t_s >= 0) && (t_s <= one), w_i, e_bottom_i, e_top_i, e_right_i, e_left_i, tag_i}),
+    .valid_o(valid_q1), .q_o({q_q1, t_ok_q1, e_q1, tag_q1}));
 
-  // ---- the fifteen exact products q_c · E_c (rpu_mul); t_ok and the tag in one's tag ----
-  // Vector v (0 left, 1 right, 2 top, 3 bottom, 4 W), component c.
+  // ---- the fifteen exact products q_c · E_c; t_ok and the tag beside them ----
   wire [15*PW-1:0] prod;
   wire             m_valid;
   wire [TagW:0]    m_tag;
-  genvar v;
-  generate
-    for (v = 0; v < 5; v = v + 1) begin : g_vec
-      for (c = 0; c < 3; c = c + 1) begin : g_comp
-        wire            mv;
-        wire [TagW:0]   mt;
-        rpu_mul #(.AW(EdgeW), .BW(QW), .Signed(1), .TagW(TagW + 1)) u_mul (
-          .clk_i, .rst_ni, .valid_i(valid_q1), .a_i(e_q1[(3*v + c)*EdgeW +: EdgeW]),
-          .b_i(q_q1[c*QW +: QW]), .tag_i({tag_q1, t_ok_q1}),
-          .valid_o(mv), .p_o(prod[(3*v + c)*PW +: PW]), .tag_o(mt));
-        if (v == 0 && c == 0) begin : g_ctl
-          assign m_valid = mv;
-          assign m_tag   = mt;
-        end else begin : g_no_ctl
-          wire unused_ctl = ^{mv, mt};
-        end
-      end
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(15), .AW(EdgeW), .BW(QW), .Signed(1), .TagW(TagW + 1)) u_prod (
+    .clk_i, .rst_ni, .valid_i(valid_q1), .a_i(e_q1), .b_i({5{q_q1}}), .tag_i({tag_q1, t_ok_q1}),
+    .valid_o(m_valid), .p_o(prod), .tag_o(m_tag));
 
-  // ---- the dot products (a sum of three as one carry-save step and one adder), their signs ----
-  // a + b + c = (a ^ b ^ c) + 2·maj(a, b, c), exact modulo 2^SW (the sum fits SW bits).
-  wire signed [SW-1:0] dots [0:4];
+  // ---- the dot products (a sum of three in one carry chain, rpu_add3), their signs ----
+  // The sum fits SW bits, so the modulo-2^SW sum is exact.
+  wire [5*SW-1:0] dots;
+  genvar v;
   generate
     for (v = 0; v < 5; v = v + 1) begin : g_dot
       wire signed [PW-1:0] p0 = prod[(3*v + 0)*PW +: PW];
       wire signed [PW-1:0] p1 = prod[(3*v + 1)*PW +: PW];
       wire signed [PW-1:0] p2 = prod[(3*v + 2)*PW +: PW];
-      wire [SW-1:0] x0 = {{2{p0[PW-1]}}, p0};
-      wire [SW-1:0] x1 = {{2{p1[PW-1]}}, p1};
-      wire [SW-1:0] x2 = {{2{p2[PW-1]}}, p2};
-      wire [SW-1:0] cs_s = x0 ^ x1 ^ x2;
-      wire [SW-2:0] cs_c = (x0[SW-2:0] & x1[SW-2:0]) | (x0[SW-2:0] & x2[SW-2:0]) |
-                           (x1[SW-2:0] & x2[SW-2:0]);
-      assign dots[v] = cs_s + {cs_c, 1'b0};
+      rpu_add3 #(.W(SW)) u_dot (
+        .a_i({{2{p0[PW-1]}}, p0}), .b_i({{2{p1[PW-1]}}, p1}), .c_i({{2{p2[PW-1]}}, p2}),
+        .s_o(dots[v*SW +: SW]));
     end
   endgenerate
 
-  reg              valid_q3;
-  reg [3:0]        neg_q3;     // the signs of {bottom, top, right, left}
-  reg [SW-1:0]     dot_w_q3;   // q·W
-  reg              t_ok_q3;
-  reg [TagW-1:0]   tag_q3;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q3 <= 1'b0;
-    else         valid_q3 <= m_valid;
-  end
-  always @(posedge clk_i) begin
-    neg_q3   <= {dots[3][SW-1], dots[2][SW-1], dots[1][SW-1], dots[0][SW-1]};
-    dot_w_q3 <= dots[4];
-    t_ok_q3  <= m_tag[0];
-    tag_q3   <= m_tag[TagW:1];
-  end
+  wire              valid_q3;
+  wire [3:0]        neg_q3;     // the signs of {bottom, top, right, left}
+  wire [SW-1:0]     dot_w_q3;   // q·W
+  wire              t_ok_q3;
+  wire [TagW-1:0]   tag_q3;
+  rpu_stage #(.W(4 + SW + 1 + TagW)) u_s3 (
+    .clk_i, .rst_ni, .valid_i(m_valid),
+    .d_i({dots[4*SW - 1], dots[3*SW - 1], dots[2*SW - 1], dots[SW - 1], dots[4*SW +: SW],
+          m_tag}),
+    .valid_o(valid_q3), .q_o({neg_q3, dot_w_q3, tag_q3, t_ok_q3}));
 
   // ---- the hit: 0 <= t <= 1, depth > 0 and all four signs ----
   wire [3:0] signs_q3 = {neg_q3[3], ~neg_q3[2], neg_q3[1], ~neg_q3[0]};  // {bottom < 0, top >= 0,
                                                                           //  right < 0, left >= 0}
-  reg              valid_q4;
-  reg              hit_q4, t_ok_q4;
-  reg [3:0]        signs_q4;
-  reg [DepthW-1:0] depth_q4;
-  reg [TagW-1:0]   tag_q4;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q4 <= 1'b0;
-    else         valid_q4 <= valid_q3;
-  end
-  always @(posedge clk_i) begin
-    signs_q4 <= signs_q3;
-    t_ok_q4  <= t_ok_q3;
-    hit_q4   <= t_ok_q3 && ~dot_w_q3[SW-1] && (|dot_w_q3) && (&signs_q3);
-    depth_q4 <= dot_w_q3[DepthW-1:0];
-  end
-  // Loaded only with a valid operand, so the tag leaves a flip-flop, not a shift-register LUT.
-  always @(posedge clk_i) if (valid_q3) tag_q4 <= tag_q3;
-
-  assign valid_o      = valid_q4;
-  assign hit_o        = hit_q4;
-  assign t_in_range_o = t_ok_q4;
-  assign signs_o      = signs_q4;
-  assign depth_o      = depth_q4;
-  assign tag_o        = tag_q4;
+  wire hit_q3 = t_ok_q3 && ~dot_w_q3[SW-1] && (|dot_w_q3) && (&signs_q3);
+  wire valid_q4_unused;
+  rpu_stage #(.W(2 + 4 + DepthW)) u_s4 (
+    .clk_i, .rst_ni, .valid_i(valid_q3),
+    .d_i({hit_q3, t_ok_q3, signs_q3, dot_w_q3[DepthW-1:0]}),
+    .valid_o(valid_o), .q_o({hit_o, t_in_range_o, signs_o, depth_o}));
+  // The tag loads only with a valid operand, so it leaves a flip-flop, not a shift-register LUT.
+  rpu_stage #(.W(TagW), .Hold(1)) u_s4_tag (
+    .clk_i, .rst_ni, .valid_i(valid_q3), .d_i(tag_q3), .valid_o(valid_q4_unused), .q_o(tag_o));
 endmodule
 
 `default_nettype wire

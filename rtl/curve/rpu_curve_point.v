@@ -43,9 +43,9 @@ module rpu_curve_point #(
   input  wire [GW-1:0]     g1_i,    // LSB, signed
   input  wire [GW-1:0]     g2_i,    // LSB, signed
   input  wire [TagW-1:0]   tag_i,
-  output reg               valid_o,
-  output reg  [3*XW-1:0]   x_o,     // {z, y, x}, LSB, signed each
-  output reg  [TagW-1:0]   tag_o
+  output wire              valid_o,
+  output wire [3*XW-1:0]   x_o,     // {z, y, x}, LSB, signed each
+  output wire [TagW-1:0]   tag_o
 );
   localparam integer OmW = TW + 1;       // 2^FT − t ∈ (−3, 5]·2^FT
   localparam integer GkW = `RPU_HW(CoordW);   // G1 ∈ [−10, 10)·2^CW, G2 ∈ [−8, 8]·2^CW
@@ -91,10 +91,15 @@ module rpu_curve_point #(
   wire [3*UW-1:0]  u2_g  = g_tag[3*UW-1:0];
 
   // ---- floor(u1·G1), floor(u2·G2) and p(t) = p1 + floor(d·t), each modulo 2^XW ----
-  wire [3*XW-1:0] ug1, ug2;
+  localparam integer UgW = UW + GkW;
+  wire [6*UgW-1:0] ug_p;  // {u2·G2, u1·G1}, three lanes each
+  wire [TagW-1:0]  tag_u;
+  wire             u_valid;
+  rpu_mul_vec #(.Count(6), .AW(UW), .BW(GkW), .Signed(1), .TagW(TagW)) u_ug (
+    .clk_i, .rst_ni, .valid_i(g_valid), .a_i({u2_g, u1_g}), .b_i({{3{G2}}, {3{G1}}}),
+    .tag_i(tag_g), .valid_o(u_valid), .p_o(ug_p), .tag_o(tag_u));
+  wire [3*XW-1:0] x_next;
   reg  [3*XW-1:0] pt_q;
-  wire [TagW-1:0] tag_u;
-  wire            u_valid;
   genvar c;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_term
@@ -108,43 +113,17 @@ module rpu_curve_point #(
       // The sum's low XW bits: the terms' low XW bits (sign extension of p1, floor(d·t) mod 2^XW).
       always @(posedge clk_i)
         pt_q[c*XW +: XW] <= {{(XW - CoordW){p1[CoordW-1]}}, p1} + dt_p[TFrac +: XW];
-
-      wire [UW+GkW-1:0] ug1_p, ug2_p;
-      wire              v1, v2_unused, t2_unused;
-      wire [TagW-1:0]   t1;
-      rpu_mul #(.AW(UW), .BW(GkW), .Signed(1), .TagW(TagW)) u_ug1 (
-        .clk_i, .rst_ni, .valid_i(g_valid), .a_i(u1_g[c*UW +: UW]), .b_i(G1), .tag_i(tag_g),
-        .valid_o(v1), .p_o(ug1_p), .tag_o(t1));
-      rpu_mul #(.AW(UW), .BW(GkW), .Signed(1), .TagW(1)) u_ug2 (
-        .clk_i, .rst_ni, .valid_i(g_valid), .a_i(u2_g[c*UW +: UW]), .b_i(G2), .tag_i(1'b0),
-        .valid_o(v2_unused), .p_o(ug2_p), .tag_o(t2_unused));
-      assign ug1[c*XW +: XW] = ug1_p[UnitFrac+XW-1:UnitFrac];
-      assign ug2[c*XW +: XW] = ug2_p[UnitFrac+XW-1:UnitFrac];
-      if (c == 0) begin : g_ctl
-        assign u_valid = v1;
-        assign tag_u   = t1;
-      end else begin : g_no_ctl
-        wire unused_ctl = ^{v1, t1};
-      end
-      wire unused_term = ^{dt_v_unused, v2_unused, t2_unused, dt_p[DW+TW-1:TFrac+XW],
-                           dt_p[TFrac-1:0], ug1_p[UW+GkW-1:UnitFrac+XW], ug1_p[UnitFrac-1:0],
-                           ug2_p[UW+GkW-1:UnitFrac+XW], ug2_p[UnitFrac-1:0]};
+      wire [UgW-1:0] ug1_p = ug_p[c*UgW +: UgW];
+      wire [UgW-1:0] ug2_p = ug_p[(c + 3)*UgW +: UgW];
+      // X = p(t) + floor(u1·G1) + floor(u2·G2) (modulo 2^XW, exact in range)
+      assign x_next[c*XW +: XW] = pt_q[c*XW +: XW] + ug1_p[UnitFrac +: XW] + ug2_p[UnitFrac +: XW];
+      wire unused_term = ^{dt_v_unused, dt_p[DW+TW-1:TFrac+XW], dt_p[TFrac-1:0],
+                           ug1_p[UgW-1:UnitFrac+XW], ug1_p[UnitFrac-1:0],
+                           ug2_p[UgW-1:UnitFrac+XW], ug2_p[UnitFrac-1:0]};
     end
   endgenerate
-
-  // ---- X = p(t) + floor(u1·G1) + floor(u2·G2) (modulo 2^XW, exact in range) ----
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_sum
-      always @(posedge clk_i)
-        x_o[c*XW +: XW] <= pt_q[c*XW +: XW] + ug1[c*XW +: XW] + ug2[c*XW +: XW];
-    end
-  endgenerate
-
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= u_valid;
-  end
-  always @(posedge clk_i) tag_o <= tag_u;
+  rpu_stage #(.W(3*XW + TagW)) u_out (
+    .clk_i, .rst_ni, .valid_i(u_valid), .d_i({x_next, tag_u}), .valid_o, .q_o({x_o, tag_o}));
 
   wire unused_products = ^{g1omt[GW+OmW-1:TFrac+GkW], g1omt[TFrac-1:0], g2t[TFrac-1:0]};
 endmodule

@@ -53,12 +53,12 @@ module rpu_guide_pair #(
   input  wire [AW-1:0]          a2_i,
   input  wire [TFrac-1:0]       b2_i,
   input  wire [TagW-1:0]        tag_i,
-  output reg                    valid_o,
-  output reg  signed [GW-1:0]   g1_o,    // guide offsets, LSB
-  output reg  signed [GW-1:0]   g2_o,
-  output reg  [WW-1:0]          w_o,     // w = tc·(1 − tc), Q(0.FT)
-  output reg                    ovf_o,   // an arc's radicand saturated (sticky bit of the pair)
-  output reg  [TagW-1:0]        tag_o
+  output wire                   valid_o,
+  output wire signed [GW-1:0]   g1_o,    // guide offsets, LSB
+  output wire signed [GW-1:0]   g2_o,
+  output wire [WW-1:0]          w_o,     // w = tc·(1 − tc), Q(0.FT)
+  output wire                   ovf_o,   // an arc's radicand saturated (sticky bit of the pair)
+  output wire [TagW-1:0]        tag_o
 );
   // rpu_sqrt's derived widths (the same formulas; RadW is even, so its RootW equals HW).
   localparam integer SqShift  = (SqrtW == 0 || RadW <= SqrtW) ? 0 : (RadW - SqrtW + 1) / 2;
@@ -163,17 +163,12 @@ module rpu_guide_pair #(
   assign {mode_l[0], h_l[0], mode_l[1], h_l[1]} = lw_tag[HhTW + 2*(2+HW) - 1 : HhTW];
 
   // ---- per guide: the radicand h² + lw (arc) and aw − floor(aw·bw) (flat) ----
-  reg             valid_r;
-  reg [WW-1:0]    w_r;
-  reg [TagW-1:0]  tag_r;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_r <= 1'b0;
-    else         valid_r <= lw_valid;
-  end
-  always @(posedge clk_i) begin
-    w_r   <= w_l;
-    tag_r <= tag_l;
-  end
+  wire            valid_r;
+  wire [WW-1:0]   w_r;
+  wire [TagW-1:0] tag_r;
+  rpu_stage #(.W(WW + TagW)) u_r (
+    .clk_i, .rst_ni, .valid_i(lw_valid), .d_i({w_l, tag_l}), .valid_o(valid_r),
+    .q_o({w_r, tag_r}));
   wire [1:0]      is_arc_r, ovf_r;
   wire [HW-1:0]   hg_r  [0:1];
   wire [RadW-1:0] rad_r [0:1];
@@ -274,17 +269,10 @@ module rpu_guide_pair #(
   wire unused_bits = ^{ww[2*TFrac-1], ww[TFrac-1:0], lw_p[TFrac-1:0], g1_arc_full[HW:GW],
                        g2_arc_full[HW:GW], sq2_valid_unused, hh_l, hh1_i, hh2_i};
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= sq1_valid;
-  end
-  always @(posedge clk_i) begin
-    g1_o  <= g1_next;
-    g2_o  <= g2_next;
-    w_o   <= sb_w;
-    ovf_o <= sb1[HW] | sb2[HW];
-    tag_o <= sb_tag;
-  end
+  rpu_stage #(.W(2*GW + WW + 1 + TagW)) u_out (
+    .clk_i, .rst_ni, .valid_i(sq1_valid),
+    .d_i({g1_next, g2_next, sb_w, sb1[HW] | sb2[HW], sb_tag}),
+    .valid_o, .q_o({g1_o, g2_o, w_o, ovf_o, tag_o}));
 endmodule
 
 `default_nettype wire

@@ -14,11 +14,7 @@
 `include "rpu_widths.vh"
 
 module rpu_ip #(
-  parameter integer CoordW   = 24,  // position width (12..40)
-  parameter integer TFrac    = 24,  // fraction bits of t (8..48)
-  parameter integer UnitFrac = 16,  // fraction bits of u_k (8..40)
-  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
-  parameter integer N        = 16,  // result bits of τ (1..40)
+`include "rpu_ip_params.vh"
   parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
   parameter integer Metric   = 0,   // 0: |pr − X|, 1: |pr − X|²
   parameter integer Unrolled = 1,   // 1: K step units, 0: one step unit reused K times
@@ -26,13 +22,7 @@ module rpu_ip #(
   parameter integer CtxW     = 1,   // caller's context passed through
   // Derived (do not override).
   parameter integer K    = N / N1,
-  parameter integer TW   = `RPU_TW(TFrac),
-  parameter integer DW   = `RPU_DW(CoordW),
-  parameter integer UW   = `RPU_UW(UnitFrac),
-  parameter integer HW   = `RPU_HW(CoordW),
-  parameter integer L2W  = `RPU_L2W(CoordW),
-  parameter integer RadW = `RPU_GRADW(CoordW),
-  parameter integer XW   = `RPU_XW(CoordW),
+`include "rpu_ip_derived.vh"
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
   parameter integer StW  = N + TW + 3*XW + MdW + MdW
 ) (

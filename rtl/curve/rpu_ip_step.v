@@ -10,11 +10,7 @@
 `include "rpu_widths.vh"
 
 module rpu_ip_step #(
-  parameter integer CoordW   = 24,  // position width (12..40)
-  parameter integer TFrac    = 24,  // fraction bits of t (8..48)
-  parameter integer UnitFrac = 16,  // fraction bits of u_k (8..40)
-  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
-  parameter integer N        = 16,  // result bits of τ (1..40)
+`include "rpu_ip_params.vh"
   parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
   parameter integer Metric   = 0,   // 0: |pr − X|, 1: |pr − X|²
   parameter integer Step     = 1,   // k of this unit (1..N/N1), or 0: taken from k_i
@@ -24,13 +20,7 @@ module rpu_ip_step #(
   parameter integer K    = N / N1,
   parameter integer J    = 1 << N1,
   parameter integer KW   = 8,                     // step counter width
-  parameter integer TW   = `RPU_TW(TFrac),
-  parameter integer DW   = `RPU_DW(CoordW),
-  parameter integer UW   = `RPU_UW(UnitFrac),
-  parameter integer HW   = `RPU_HW(CoordW),
-  parameter integer L2W  = `RPU_L2W(CoordW),
-  parameter integer RadW = `RPU_GRADW(CoordW),
-  parameter integer XW   = `RPU_XW(CoordW),
+`include "rpu_ip_derived.vh"
   parameter integer MdW  = Metric == 0 ? CoordW + 4 : 2 * CoordW + 8,
   parameter integer StW  = N + TW + 3*XW + MdW + MdW  // {tau, lo.t, lo.X, lo.md, hi.md}
 ) (
@@ -60,12 +50,12 @@ module rpu_ip_step #(
   input  wire [3*UW-1:0]     u2_i,
   input  wire [CtxW-1:0]     ctx_i,      // passed through unchanged (the caller's descriptors)
   input  wire [TagW-1:0]     tag_i,
-  output reg                 valid_o,
-  output reg  [KW-1:0]       k_o,        // this step's k
-  output reg  [StW-1:0]      state_o,
-  output reg                 ovf_o,      // a candidate of this step saturated
-  output reg  [CtxW-1:0]     ctx_o,
-  output reg  [TagW-1:0]     tag_o
+  output wire                valid_o,
+  output wire [KW-1:0]       k_o,        // this step's k
+  output wire [StW-1:0]      state_o,
+  output wire                ovf_o,      // a candidate of this step saturated
+  output wire [CtxW-1:0]     ctx_o,
+  output wire [TagW-1:0]     tag_o
 );
   initial begin
     if (N1 < 1 || N1 > 8) $fatal(1, "rpu_ip_step: N1 must be in 1..8");
@@ -239,17 +229,10 @@ module rpu_ip_step #(
     end
   end
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= valid_r;
-  end
-  always @(posedge clk_i) begin
-    k_o     <= k_c;
-    state_o <= {tau_next, lo_t_n, lo_x_n, lo_md_n, hi_md_n};
-    ovf_o   <= |c_ovf_r;
-    ctx_o   <= ctx_c;
-    tag_o   <= tag_c;
-  end
+  rpu_stage #(.W(KW + StW + 1 + CtxW + TagW)) u_out (
+    .clk_i, .rst_ni, .valid_i(valid_r),
+    .d_i({k_c, tau_next, lo_t_n, lo_x_n, lo_md_n, hi_md_n, |c_ovf_r, ctx_c, tag_c}),
+    .valid_o, .q_o({k_o, state_o, ovf_o, ctx_o, tag_o}));
   wire unused_step = ^c_valid;
 endmodule
 

@@ -158,34 +158,19 @@ module rpu_sphere #(
   wire [3*PvW-1:0] pcb;
   wire             m1_valid;
   wire [C1W-1:0]   c2;
+  wire [3*DiffW-1:0] qa1, qb1;  // q rotated: {q_{k+1}}, {q_{k+2}}
+  wire [3*DirW-1:0]  va1, vb1;  // v̂ rotated: {v̂_{k+2}}, {v̂_{k+1}}
   generate
-    for (k = 0; k < 3; k = k + 1) begin : g_pv
-      wire [DirW-1:0]  vk = v1_q[k*DirW +: DirW];
-      wire [DiffW-1:0] qk = q1_q[k*DiffW +: DiffW];
-      wire [DirW-1:0]  va = v1_q[((k+2)%3)*DirW +: DirW];
-      wire [DiffW-1:0] qa = q1_q[((k+1)%3)*DiffW +: DiffW];
-      wire [DirW-1:0]  vb = v1_q[((k+1)%3)*DirW +: DirW];
-      wire [DiffW-1:0] qb = q1_q[((k+2)%3)*DiffW +: DiffW];
-      wire             v_pv, v_a, v_b, t_a, t_b;
-      wire [C1W-1:0]   t_pv;
-      rpu_mul #(.AW(DiffW), .BW(DirW), .Signed(1), .TagW(C1W)) u_pv (
-        .clk_i, .rst_ni, .valid_i(valid1_q), .a_i(qk), .b_i(vk), .tag_i(c1_q),
-        .valid_o(v_pv), .p_o(pv[k*PvW +: PvW]), .tag_o(t_pv));
-      rpu_mul #(.AW(DiffW), .BW(DirW), .Signed(1), .TagW(1)) u_pca (
-        .clk_i, .rst_ni, .valid_i(valid1_q), .a_i(qa), .b_i(va), .tag_i(1'b0),
-        .valid_o(v_a), .p_o(pca[k*PvW +: PvW]), .tag_o(t_a));
-      rpu_mul #(.AW(DiffW), .BW(DirW), .Signed(1), .TagW(1)) u_pcb (
-        .clk_i, .rst_ni, .valid_i(valid1_q), .a_i(qb), .b_i(vb), .tag_i(1'b0),
-        .valid_o(v_b), .p_o(pcb[k*PvW +: PvW]), .tag_o(t_b));
-      if (k == 0) begin : g_ctl
-        assign m1_valid = v_pv;
-        assign c2       = t_pv;
-        wire unused_ctl = ^{v_a, v_b, t_a, t_b};
-      end else begin : g_no_ctl
-        wire unused_ctl = ^{v_pv, t_pv, v_a, v_b, t_a, t_b};
-      end
+    for (k = 0; k < 3; k = k + 1) begin : g_rot
+      assign qa1[k*DiffW +: DiffW] = q1_q[((k+1)%3)*DiffW +: DiffW];
+      assign qb1[k*DiffW +: DiffW] = q1_q[((k+2)%3)*DiffW +: DiffW];
+      assign va1[k*DirW +: DirW]   = v1_q[((k+2)%3)*DirW +: DirW];
+      assign vb1[k*DirW +: DirW]   = v1_q[((k+1)%3)*DirW +: DirW];
     end
   endgenerate
+  rpu_mul_vec #(.Count(9), .AW(DiffW), .BW(DirW), .Signed(1), .TagW(C1W)) u_pv (
+    .clk_i, .rst_ni, .valid_i(valid1_q), .a_i({qb1, qa1, q1_q}), .b_i({vb1, va1, v1_q}),
+    .tag_i(c1_q), .valid_o(m1_valid), .p_o({pcb, pca, pv}), .tag_o(c2));
 
   // ---------------------------------------------------------------------------------------------
   // Stage 3: tc = floor(v̂·q · 2^-FV) (the sum cannot wrap in VqW bits; one carry-save step and
@@ -195,10 +180,8 @@ module rpu_sphere #(
   wire [VqW-1:0] pv_x = {{(VqW-PvW){pv[1*PvW-1]}}, pv[0*PvW +: PvW]};
   wire [VqW-1:0] pv_y = {{(VqW-PvW){pv[2*PvW-1]}}, pv[1*PvW +: PvW]};
   wire [VqW-1:0] pv_z = {{(VqW-PvW){pv[3*PvW-1]}}, pv[2*PvW +: PvW]};
-  wire [VqW-1:0] vq_s = pv_x ^ pv_y ^ pv_z;
-  wire [VqW-2:0] vq_c = (pv_x[VqW-2:0] & pv_y[VqW-2:0]) | (pv_x[VqW-2:0] & pv_z[VqW-2:0]) |
-                        (pv_y[VqW-2:0] & pv_z[VqW-2:0]);
-  wire [VqW-1:0] vq   = vq_s + {vq_c, 1'b0};
+  wire [VqW-1:0] vq;
+  rpu_add3 #(.W(VqW)) u_vq (.a_i(pv_x), .b_i(pv_y), .c_i(pv_z), .s_o(vq));
   wire [TcW-1:0] tc   = vq[VqW-1:FV];  // arithmetic shift right by FV (floor)
   wire unused_vq = ^vq[FV-1:0];
   wire [3*WtW-1:0] wt;
@@ -227,23 +210,13 @@ module rpu_sphere #(
   wire [3*WsqW-1:0] wsq;
   wire              m2_valid;
   wire [C4W-1:0]    c4;
+  wire [6*WtW-1:0] sq2;
+  rpu_mul_vec #(.Count(3), .AW(WtW), .BW(WtW), .Signed(1), .TagW(C4W)) u_sq (
+    .clk_i, .rst_ni, .valid_i(valid3_q), .a_i(wt3_q), .b_i(wt3_q), .tag_i(c3_q),
+    .valid_o(m2_valid), .p_o(sq2), .tag_o(c4));
   generate
     for (k = 0; k < 3; k = k + 1) begin : g_wsq
-      wire [WtW-1:0]   wk = wt3_q[k*WtW +: WtW];
-      wire [2*WtW-1:0] sq;
-      wire             v_sq;
-      if (k == 0) begin : g_ctl
-        rpu_mul #(.AW(WtW), .BW(WtW), .Signed(1), .TagW(C4W)) u_sq (
-          .clk_i, .rst_ni, .valid_i(valid3_q), .a_i(wk), .b_i(wk), .tag_i(c3_q),
-          .valid_o(v_sq), .p_o(sq), .tag_o(c4));
-        assign m2_valid = v_sq;
-      end else begin : g_no_ctl
-        wire t_sq;
-        rpu_mul #(.AW(WtW), .BW(WtW), .Signed(1), .TagW(1)) u_sq (
-          .clk_i, .rst_ni, .valid_i(valid3_q), .a_i(wk), .b_i(wk), .tag_i(1'b0),
-          .valid_o(v_sq), .p_o(sq), .tag_o(t_sq));
-        wire unused_ctl = ^{v_sq, t_sq};
-      end
+      wire [2*WtW-1:0] sq = sq2[k*2*WtW +: 2*WtW];
       // |wt_k| <= 2^(WtW−1), so wt_k² <= 2^(2WtW−2) < 2^WsqW: the top bit is zero.
       assign wsq[k*WsqW +: WsqW] = sq[WsqW-1:0];
       wire unused_sq = sq[2*WtW-1];
@@ -257,10 +230,8 @@ module rpu_sphere #(
   wire [PsW-1:0] sq_x = {2'b00, wsq[0*WsqW +: WsqW]};
   wire [PsW-1:0] sq_y = {2'b00, wsq[1*WsqW +: WsqW]};
   wire [PsW-1:0] sq_z = {2'b00, wsq[2*WsqW +: WsqW]};
-  wire [PsW-1:0] ws_s = sq_x ^ sq_y ^ sq_z;
-  wire [PsW-2:0] ws_c = (sq_x[PsW-2:0] & sq_y[PsW-2:0]) | (sq_x[PsW-2:0] & sq_z[PsW-2:0]) |
-                        (sq_y[PsW-2:0] & sq_z[PsW-2:0]);
-  wire [PsW-1:0] wsum = ws_s + {ws_c, 1'b0};
+  wire [PsW-1:0] wsum;
+  rpu_add3 #(.W(PsW)) u_ws (.a_i(sq_x), .b_i(sq_y), .c_i(sq_z), .s_o(wsum));
   wire unused_wsum = ^wsum[2*Guard-1:0];
 
   reg [PerpW-1:0]       perp5_q;
@@ -399,29 +370,9 @@ module rpu_sphere #(
   wire [3*PtW-1:0] pb;
   wire             m3_valid;
   wire [C9W-1:0]   c9;
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : g_pt
-      wire [DirW-1:0] vk = v8_q[k*DirW +: DirW];
-      wire            v_a, v_b, t_b;
-      if (k == 0) begin : g_ctl
-        rpu_mul #(.AW(DirW), .BW(TpW), .Signed(1), .TagW(C9W)) u_pa (
-          .clk_i, .rst_ni, .valid_i(valid8_q), .a_i(vk), .b_i(t1_8_q),
-          .tag_i({seg8_q, out8_q, sovf8_q, h8_q}),
-          .valid_o(v_a), .p_o(pa[k*PtW +: PtW]), .tag_o(c9));
-        assign m3_valid = v_a;
-      end else begin : g_no_ctl
-        wire t_a;
-        rpu_mul #(.AW(DirW), .BW(TpW), .Signed(1), .TagW(1)) u_pa (
-          .clk_i, .rst_ni, .valid_i(valid8_q), .a_i(vk), .b_i(t1_8_q), .tag_i(1'b0),
-          .valid_o(v_a), .p_o(pa[k*PtW +: PtW]), .tag_o(t_a));
-        wire unused_ctl = ^{v_a, t_a};
-      end
-      rpu_mul #(.AW(DirW), .BW(TpW), .Signed(1), .TagW(1)) u_pb (
-        .clk_i, .rst_ni, .valid_i(valid8_q), .a_i(vk), .b_i(t2_8_q), .tag_i(1'b0),
-        .valid_o(v_b), .p_o(pb[k*PtW +: PtW]), .tag_o(t_b));
-      wire unused_b = ^{v_b, t_b};
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(6), .AW(DirW), .BW(TpW), .Signed(1), .TagW(C9W)) u_pt (
+    .clk_i, .rst_ni, .valid_i(valid8_q), .a_i({v8_q, v8_q}), .b_i({{3{t2_8_q}}, {3{t1_8_q}}}),
+    .tag_i({seg8_q, out8_q, sovf8_q, h8_q}), .valid_o(m3_valid), .p_o({pb, pa}), .tag_o(c9));
   wire [3*CW-1:0] h9    = c9[0 +: 3*CW];
   wire            sovf9 = c9[3*CW];
   wire [OutW-1:0] out9  = c9[3*CW+1 +: OutW];
@@ -513,28 +464,9 @@ module rpu_sphere #(
   wire [3*PdW-1:0]     prod_b;
   wire                 m4_valid;
   wire [ResW+InvW+6:0] res12;
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : g_dp
-      wire [DiffW-1:0] dk  = d11_q[k*DiffW +: DiffW];
-      wire             v_a, v_b, t_b;
-      if (k == 0) begin : g_ctl
-        rpu_mul #(.AW(DiffW), .BW(DiffW), .Signed(1), .TagW(ResW + InvW + 7)) u_pa (
-          .clk_i, .rst_ni, .valid_i(valid11_q), .a_i(ap11_q[k*DiffW +: DiffW]), .b_i(dk),
-          .tag_i(res11_q), .valid_o(v_a), .p_o(prod_a[k*PdW +: PdW]), .tag_o(res12));
-        assign m4_valid = v_a;
-      end else begin : g_no_ctl
-        wire t_a;
-        rpu_mul #(.AW(DiffW), .BW(DiffW), .Signed(1), .TagW(1)) u_pa (
-          .clk_i, .rst_ni, .valid_i(valid11_q), .a_i(ap11_q[k*DiffW +: DiffW]), .b_i(dk),
-          .tag_i(1'b0), .valid_o(v_a), .p_o(prod_a[k*PdW +: PdW]), .tag_o(t_a));
-        wire unused_ctl = ^{v_a, t_a};
-      end
-      rpu_mul #(.AW(DiffW), .BW(DiffW), .Signed(1), .TagW(1)) u_pb (
-        .clk_i, .rst_ni, .valid_i(valid11_q), .a_i(ab11_q[k*DiffW +: DiffW]), .b_i(dk),
-        .tag_i(1'b0), .valid_o(v_b), .p_o(prod_b[k*PdW +: PdW]), .tag_o(t_b));
-      wire unused_b = ^{v_b, t_b};
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(6), .AW(DiffW), .BW(DiffW), .Signed(1), .TagW(ResW + InvW + 7)) u_dp (
+    .clk_i, .rst_ni, .valid_i(valid11_q), .a_i({ab11_q, ap11_q}), .b_i({d11_q, d11_q}),
+    .tag_i(res11_q), .valid_o(m4_valid), .p_o({prod_b, prod_a}), .tag_o(res12));
 
   // ---------------------------------------------------------------------------------------------
   // Stage 13: the dot products (sums of three exact products, DotW bits: one carry-save step
@@ -546,14 +478,9 @@ module rpu_sphere #(
   wire [DotW-1:0] pb_x = {{2{prod_b[1*PdW-1]}}, prod_b[0*PdW +: PdW]};
   wire [DotW-1:0] pb_y = {{2{prod_b[2*PdW-1]}}, prod_b[1*PdW +: PdW]};
   wire [DotW-1:0] pb_z = {{2{prod_b[3*PdW-1]}}, prod_b[2*PdW +: PdW]};
-  wire [DotW-1:0] da_s = pa_x ^ pa_y ^ pa_z;
-  wire [DotW-2:0] da_c = (pa_x[DotW-2:0] & pa_y[DotW-2:0]) | (pa_x[DotW-2:0] & pa_z[DotW-2:0]) |
-                         (pa_y[DotW-2:0] & pa_z[DotW-2:0]);
-  wire [DotW-1:0] db_s = pb_x ^ pb_y ^ pb_z;
-  wire [DotW-2:0] db_c = (pb_x[DotW-2:0] & pb_y[DotW-2:0]) | (pb_x[DotW-2:0] & pb_z[DotW-2:0]) |
-                         (pb_y[DotW-2:0] & pb_z[DotW-2:0]);
-  wire [DotW-1:0] dot_a = da_s + {da_c, 1'b0};
-  wire [DotW-1:0] dot_b = db_s + {db_c, 1'b0};
+  wire [DotW-1:0] dot_a, dot_b;
+  rpu_add3 #(.W(DotW)) u_dot_a (.a_i(pa_x), .b_i(pa_y), .c_i(pa_z), .s_o(dot_a));
+  rpu_add3 #(.W(DotW)) u_dot_b (.a_i(pb_x), .b_i(pb_y), .c_i(pb_z), .s_o(dot_b));
 
   reg [DotW-1:0] dot_a13_q;
   reg [DotW-1:0] dot_b13_q;

@@ -30,8 +30,8 @@
 // One point per cycle, no stall; `tag_i` comes out unchanged with the result.
 //
 // Pipeline (every product an rpu_mul; every stage at most one wide carry chain, three-term sums as
-// one carry-save step and an adder, rpu_indicator_add3; context in the units' tags and in
-// rpu_indicator_delay lines):
+// one carry-save step and an adder, rpu_add3; every stage register an rpu_stage; context in the
+// units' tags and in rpu_delay lines):
 //   E1       inputs registered; the rocket's region (y ≤ 0 fins, y > b cone, else cylinder); the
 //            constant product's operand y or y − b, mantissa and shift (relief: y_angle; rocket:
 //            fin or cone), the shift clamped to PW − 1; lane enables m < full_turns + last_turn
@@ -84,32 +84,15 @@ module rpu_indicator #(
   input  wire [3*SurfW-1:0]   l_i,
   input  wire                 x_negative_i,
   input  wire                 last_turn_i,
-  input  wire [3:0]           full_turns_i,
-  input  wire [KF:0]          sx_i,
-  input  wire [KF:0]          sy_i,
-  input  wire [KF:0]          sz_i,
-  input  wire [R2W-1:0]       r2_i,
-  input  wire [KF+1:0]        kd_i,
-  input  wire [KF+1:0]        ke2_i,
-  input  wire [MW-1:0]        y_angle_m_i,
-  input  wire [7:0]           y_angle_s_i,
-  input  wire [SurfW-1:0]     rho0_i,
-  input  wire [TurnW-1:0]     a_turn_i,
-  input  wire [TurnW-1:0]     k_turn_i,
-  input  wire [SurfW-1:0]     rocket_a_i,
-  input  wire [SurfW-1:0]     rocket_b_i,
-  input  wire [MW-1:0]        fin_m_i,
-  input  wire [7:0]           fin_s_i,
-  input  wire [MW-1:0]        cone_m_i,
-  input  wire [7:0]           cone_s_i,
+`include "rpu_surface_ind_ports.vh"
   input  wire [TagW-1:0]      tag_i,
-  output reg                  valid_o,
-  output reg                  inside_o,
-  output reg  [Lanes-1:0]     turn_inside_o,
-  output reg  [AngleW-1:0]    angle_o,
-  output reg  [CW-1:0]        rho_o,
-  output reg                  ovf_o,
-  output reg  [TagW-1:0]      tag_o
+  output wire                 valid_o,
+  output wire                 inside_o,
+  output wire [Lanes-1:0]     turn_inside_o,
+  output wire [AngleW-1:0]    angle_o,
+  output wire [CW-1:0]        rho_o,
+  output wire                 ovf_o,
+  output wire [TagW-1:0]      tag_o
 );
 `include "rpu_mul_latency.vh"
   localparam integer LW   = SurfW;
@@ -225,30 +208,21 @@ module rpu_indicator #(
 
   // The context after E1: {tag, type, x_negative, en, x, y, z, rho0, a_turn, k_turn, sx, sy, r2,
   // kd, ke2, a, shift, fins, cylinder}.
+  // Beside it the product operands: the point {z, y, x}, the scales {sz, sy, sx}, op and m.
   localparam integer C1W = TagW + 5 + 1 + Lanes + 4 * LW + 2 * TurnW + 2 * (KF + 1) + R2W +
                            2 * (KF + 2) + LW + SCW + 2;
-  reg [C1W-1:0]  s1_ctx_q;
-  reg [LW-1:0]   s1_x_q, s1_y_q, s1_z_q;
-  reg [KF:0]     s1_sx_q, s1_sy_q, s1_sz_q;
-  reg [OPW-1:0]  s1_op_q;
-  reg [MW-1:0]   s1_cm_q;
-  reg            s1_valid_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) s1_valid_q <= 1'b0;
-    else         s1_valid_q <= valid_i;
-  end
-  always @(posedge clk_i) begin
-    s1_ctx_q <= {tag_i, typ, x_negative_i, en, lx, ly, lz, rho0_i, a_turn_i, k_turn_i, sx_i, sy_i,
-                 r2_i, kd_i, ke2_i, rocket_a_i, sc, fins, cyl};
-    s1_x_q   <= lx;
-    s1_y_q   <= ly;
-    s1_z_q   <= lz;
-    s1_sx_q  <= sx_i;
-    s1_sy_q  <= sy_i;
-    s1_sz_q  <= sz_i;
-    s1_op_q  <= op;
-    s1_cm_q  <= cm;
-  end
+  localparam integer SkW = KF + 1;  // a scale sx, sy, sz
+  wire             s1_valid_q;
+  wire [C1W-1:0]   s1_ctx_q;
+  wire [3*LW-1:0]  s1_l_q;
+  wire [3*SkW-1:0] s1_s_q;
+  wire [OPW-1:0]   s1_op_q;
+  wire [MW-1:0]    s1_cm_q;
+  rpu_stage #(.W(C1W + 3*LW + 3*SkW + OPW + MW)) u_e1 (
+    .clk_i, .rst_ni, .valid_i,
+    .d_i({tag_i, typ, x_negative_i, en, lx, ly, lz, rho0_i, a_turn_i, k_turn_i, sx_i, sy_i, r2_i,
+          kd_i, ke2_i, rocket_a_i, sc, fins, cyl, l_i, sz_i, sy_i, sx_i, op, cm}),
+    .valid_o(s1_valid_q), .q_o({s1_ctx_q, s1_l_q, s1_s_q, s1_op_q, s1_cm_q}));
   wire unused_e1 = ^cs[7:SCW];
 
   // ===============================================================================================
@@ -259,17 +233,12 @@ module rpu_indicator #(
   wire [PW-1:0]   pcp;
   wire            f_valid;
   wire [C1W-1:0]  f_ctx;
-  wire            mv_ys, mv_zs, mv_cp;
-  wire            mt_ys, mt_zs, mt_cp;
-  rpu_mul #(.AW(LW), .BW(KF + 2), .Signed(1), .TagW(C1W), .Latency(LF)) u_xs (
-    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_x_q), .b_i({1'b0, s1_sx_q}),
-    .tag_i(s1_ctx_q), .valid_o(f_valid), .p_o(pxs), .tag_o(f_ctx));
-  rpu_mul #(.AW(LW), .BW(KF + 2), .Signed(1), .TagW(1), .Latency(LF)) u_ys (
-    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_y_q), .b_i({1'b0, s1_sy_q}),
-    .tag_i(1'b0), .valid_o(mv_ys), .p_o(pys), .tag_o(mt_ys));
-  rpu_mul #(.AW(LW), .BW(KF + 2), .Signed(1), .TagW(1), .Latency(LF)) u_zs (
-    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_z_q), .b_i({1'b0, s1_sz_q}),
-    .tag_i(1'b0), .valid_o(mv_zs), .p_o(pzs), .tag_o(mt_zs));
+  wire            mv_cp, mt_cp;
+  // The scales as non-negative signed operands; the context rides in the x product's tag.
+  rpu_mul_vec #(.Count(3), .AW(LW), .BW(KF + 2), .Signed(1), .TagW(C1W), .Latency(LF)) u_xyz (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_l_q),
+    .b_i({1'b0, s1_s_q[2*SkW +: SkW], 1'b0, s1_s_q[SkW +: SkW], 1'b0, s1_s_q[0 +: SkW]}),
+    .tag_i(s1_ctx_q), .valid_o(f_valid), .p_o({pzs, pys, pxs}), .tag_o(f_ctx));
   rpu_mul #(.AW(OPW), .BW(MW), .Signed(1), .TagW(1), .Latency(LF)) u_cp (
     .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_op_q), .b_i(s1_cm_q),
     .tag_i(1'b0), .valid_o(mv_cp), .p_o(pcp), .tag_o(mt_cp));
@@ -277,8 +246,8 @@ module rpu_indicator #(
   wire [XSW-1:0] xs = pxs[KF-G +: XSW];
   wire [XSW-1:0] ys = pys[KF-G +: XSW];
   wire [XSW-1:0] zs = pzs[KF-G +: XSW];
-  wire unused_f = ^{mv_ys, mv_zs, mv_cp, mt_ys, mt_zs, mt_cp, pxs[KfDropW-1:0], pys[KfDropW-1:0],
-                    pzs[KfDropW-1:0], pxs[SxPW-1], pys[SxPW-1], pzs[SxPW-1]};
+  wire unused_f = ^{mv_cp, mt_cp, pxs[KfDropW-1:0], pys[KfDropW-1:0], pzs[KfDropW-1:0],
+                    pxs[SxPW-1], pys[SxPW-1], pzs[SxPW-1]};
 
   wire [TagW-1:0]  f_tag;
   wire [4:0]       f_typ;
@@ -307,24 +276,13 @@ module rpu_indicator #(
   wire [C2W-1:0] v_ctx;
   rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(0), .TagW(C2W)) u_vec (
     .clk_i, .rst_ni, .valid_i(f_valid), .x_i(vx_in), .y_i(vy_in), .angle_i({AW{1'b0}}),
-    .tag_i({f_tag, f_typ, f_xneg, f_en, f_y, f_rho0, f_at, f_kt, f_sx, f_sy, f_r2, f_kd, f_ke2,
-            f_ra, f_sc, f_fins, f_cyl, xs, ys, zs, pcp}),
+    .tag_i({f_tag, f_typ, f_en, f_y, f_rho0, f_sx, f_sy, f_r2, f_kd, f_ke2, f_ra, f_sc, f_fins,
+            f_cyl, xs, ys, zs, pcp, f_at, f_kt, f_xneg}),
     .valid_o(v_valid), .x_o(v_mag), .y_o(v_y_unused), .angle_o(v_angle), .tag_o(v_ctx));
-
-  wire [TagW-1:0]  v_tag;
-  wire [4:0]       v_typ;
-  wire             v_xneg, v_fins, v_cyl;
-  wire [Lanes-1:0] v_en;
-  wire [LW-1:0]    v_y, v_rho0, v_ra;
-  wire [TurnW-1:0] v_at, v_kt;
-  wire [KF:0]      v_sx, v_sy;
-  wire [R2W-1:0]   v_r2;
-  wire [KF+1:0]    v_kd, v_ke2;
-  wire [SCW-1:0]   v_sc;
-  wire [XSW-1:0]   v_xs, v_ys, v_zs;
-  wire [PW-1:0]    v_p;
-  assign {v_tag, v_typ, v_xneg, v_en, v_y, v_rho0, v_at, v_kt, v_sx, v_sy, v_r2, v_kd, v_ke2, v_ra,
-          v_sc, v_fins, v_cyl, v_xs, v_ys, v_zs, v_p} = v_ctx;
+  // What LT reads of the context is at its bottom: {..., a_turn, k_turn, x_negative}.
+  wire             v_xneg = v_ctx[0];
+  wire [TurnW-1:0] v_kt   = v_ctx[1 +: TurnW];
+  wire [TurnW-1:0] v_at   = v_ctx[1 + TurnW +: TurnW];
 
   // ψ unwrapped on the piece's branch (unwrap_azimuth): x ≥ 0 and ψ ≥ ¾ turn → ψ − 2^AW;
   // x < 0 and ψ < ¼ turn → ψ + 2^AW. Only the two bits above ψ change.
@@ -338,17 +296,13 @@ module rpu_indicator #(
   localparam integer C3W = C2W - 1 + AW + CW;
   localparam integer TPW = PSW + TurnW;
   wire [TPW-1:0] pat, pkt;
-  wire           t_valid, v_pkt, t_pkt;
+  wire           t_valid;
   wire [C3W-1:0] t_ctx;
-  rpu_mul #(.AW(PSW), .BW(TurnW), .Signed(1), .TagW(C3W)) u_at (
-    .clk_i, .rst_ni, .valid_i(v_valid), .a_i(psi), .b_i(v_at),
-    .tag_i({v_tag, v_typ, v_en, v_y, v_rho0, v_at, v_kt, v_sx, v_sy, v_r2, v_kd, v_ke2, v_ra, v_sc,
-            v_fins, v_cyl, v_xs, v_ys, v_zs, v_p, v_angle, v_mag}),
-    .valid_o(t_valid), .p_o(pat), .tag_o(t_ctx));
-  rpu_mul #(.AW(PSW), .BW(TurnW), .Signed(1), .TagW(1)) u_kt (
-    .clk_i, .rst_ni, .valid_i(v_valid), .a_i(psi), .b_i(v_kt),
-    .tag_i(1'b0), .valid_o(v_pkt), .p_o(pkt), .tag_o(t_pkt));
-  wire unused_v = ^{v_y_unused, v_pkt, t_pkt, pat[AW-1:0], pkt[AW-1:0]};
+  rpu_mul_vec #(.Count(2), .AW(PSW), .BW(TurnW), .Signed(1), .ShareA(1), .TagW(C3W)) u_turn (
+    .clk_i, .rst_ni, .valid_i(v_valid), .a_i(psi), .b_i({v_kt, v_at}),
+    .tag_i({v_ctx[C2W-1:1], v_angle, v_mag}),
+    .valid_o(t_valid), .p_o({pkt, pat}), .tag_o(t_ctx));
+  wire unused_v = ^{v_y_unused, pat[AW-1:0], pkt[AW-1:0]};
 
   wire [TagW-1:0]  t_tag;
   wire [4:0]       t_typ;
@@ -364,8 +318,8 @@ module rpu_indicator #(
   wire [PW-1:0]    t_p;
   wire [AW-1:0]    t_angle;
   wire [CW-1:0]    t_rho;
-  assign {t_tag, t_typ, t_en, t_y, t_rho0, t_at, t_kt, t_sx, t_sy, t_r2, t_kd, t_ke2, t_ra, t_sc,
-          t_fins, t_cyl, t_xs, t_ys, t_zs, t_p, t_angle, t_rho} = t_ctx;
+  assign {t_tag, t_typ, t_en, t_y, t_rho0, t_sx, t_sy, t_r2, t_kd, t_ke2, t_ra, t_sc, t_fins, t_cyl,
+          t_xs, t_ys, t_zs, t_p, t_at, t_kt, t_angle, t_rho} = t_ctx;
   // r0 = floor(a_turn·ψ_u·2^-AW) (= a·ψ), y0 = floor(k_turn·ψ_u·2^-AW): the products' top bits.
   wire [R0W-1:0] t_r0 = pat[AW +: R0W];
   wire [R0W-1:0] t_y0 = pkt[AW +: R0W];
@@ -374,38 +328,22 @@ module rpu_indicator #(
   // T1: D0 = ρ − rho0 − r0, E0 = y − y0 (spiral); the coarse shift of P.
   // ===============================================================================================
   wire [SPW-1:0] d0, e0;
-  rpu_indicator_add3 #(.W(SPW), .NegB(1), .NegC(1), .Cin(2)) u_d0 (
+  rpu_add3 #(.W(SPW), .NegB(1), .NegC(1), .Cin(2)) u_d0 (
     .a_i({{(SPW - CW){1'b0}}, t_rho}), .b_i({{(SPW - LW){t_rho0[LW-1]}}, t_rho0}),
     .c_i({{(SPW - R0W){t_r0[R0W-1]}}, t_r0}), .s_o(d0));
   assign e0 = {{(SPW - LW){t_y[LW-1]}}, t_y} - {{(SPW - R0W){t_y0[R0W-1]}}, t_y0};
   wire signed [PW-1:0] coarse = $signed(t_p) >>> {t_sc[SCW-1:3], 3'b000};
 
-  reg [SPW-1:0]   t1_d0_q, t1_e0_q;
-  reg [PW-1:0]    t1_coarse_q;
-  reg [2:0]       t1_scl_q;
-  reg [TurnW-1:0] t1_at_q, t1_kt_q;
-  reg [R0W-1:0]   t1_r0_q;
-  reg             t1_valid_q, t2_valid_q, t3_valid_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      t1_valid_q <= 1'b0;
-      t2_valid_q <= 1'b0;
-      t3_valid_q <= 1'b0;
-    end else begin
-      t1_valid_q <= t_valid;
-      t2_valid_q <= t1_valid_q;
-      t3_valid_q <= t2_valid_q;
-    end
-  end
-  always @(posedge clk_i) begin
-    t1_d0_q     <= d0;
-    t1_e0_q     <= e0;
-    t1_coarse_q <= coarse;
-    t1_scl_q    <= t_sc[2:0];
-    t1_at_q     <= t_at;
-    t1_kt_q     <= t_kt;
-    t1_r0_q     <= t_r0;
-  end
+  wire             t1_valid_q;
+  wire [SPW-1:0]   t1_d0_q, t1_e0_q;
+  wire [PW-1:0]    t1_coarse_q;
+  wire [2:0]       t1_scl_q;
+  wire [TurnW-1:0] t1_at_q, t1_kt_q;
+  wire [R0W-1:0]   t1_r0_q;
+  rpu_stage #(.W(2*SPW + PW + 3 + 2*TurnW + R0W)) u_t1 (
+    .clk_i, .rst_ni, .valid_i(t_valid), .d_i({d0, e0, coarse, t_sc[2:0], t_at, t_kt, t_r0}),
+    .valid_o(t1_valid_q),
+    .q_o({t1_d0_q, t1_e0_q, t1_coarse_q, t1_scl_q, t1_at_q, t1_kt_q, t1_r0_q}));
 
   // The context for after the rotations: {tag, type, en, y, sx, sy, r2, kd, a, x·sx, y·sy, z·sz,
   // angle, ρ, fins, cylinder} three cycles on; what T3 reads two cycles on; a_turn and r0 two
@@ -413,7 +351,7 @@ module rpu_indicator #(
   localparam integer CDW = TagW + 5 + Lanes + LW + 2 * (KF + 1) + R2W + (KF + 2) + LW + 3 * XSW +
                            AW + CW + 2;
   wire [CDW-1:0] t3_ctx;
-  rpu_indicator_delay #(.W(CDW), .D(3)) u_dl_t3 (
+  rpu_delay #(.W(CDW), .D(3)) u_dl_t3 (
     .clk_i, .valid_i(t_valid),
     .d_i({t_tag, t_typ, t_en, t_y, t_sx, t_sy, t_r2, t_kd, t_ra, t_xs, t_ys, t_zs, t_angle, t_rho,
           t_fins, t_cyl}),
@@ -424,12 +362,12 @@ module rpu_indicator #(
   wire [AW-1:0]    t2_angle;
   wire [KF+1:0]    t2_ke2;
   wire             t2_fins;
-  rpu_indicator_delay #(.W(CEW), .D(2)) u_dl_t2 (
+  rpu_delay #(.W(CEW), .D(2)) u_dl_t2 (
     .clk_i, .valid_i(t_valid), .d_i({t_typ, t_en, t_angle, t_ke2, t_fins}),
     .d_o({t2_typ, t2_en, t2_angle, t2_ke2, t2_fins}));
   wire [TurnW-1:0] t3_at;
   wire [R0W-1:0]   t3_r0;
-  rpu_indicator_delay #(.W(TurnW + R0W), .D(2)) u_dl_t3b (
+  rpu_delay #(.W(TurnW + R0W), .D(2)) u_dl_t3b (
     .clk_i, .valid_i(t1_valid_q), .d_i({t1_at_q, t1_r0_q}), .d_o({t3_at, t3_r0}));
 
   // ===============================================================================================
@@ -437,7 +375,7 @@ module rpu_indicator #(
   // ===============================================================================================
   wire [SPW-1:0] at_x = {{(SPW - TurnW){t1_at_q[TurnW-1]}}, t1_at_q};
   wire [SPW-1:0] kt_x = {{(SPW - TurnW){t1_kt_q[TurnW-1]}}, t1_kt_q};
-  reg  [Lanes*SPW-1:0] t2_dr_q, t2_dy_q;
+  wire [Lanes*SPW-1:0] t2_dr, t2_dy;
   generate
     for (m = 0; m < Lanes; m = m + 1) begin : g_off
       localparam integer U1 = m != 0 ? 1 : 0;
@@ -449,19 +387,19 @@ module rpu_indicator #(
       wire [SPW-1:0] ta2 = U2 != 0 ? at_x << t2_shift(m) : {SPW{1'b0}};
       wire [SPW-1:0] tk1 = U1 != 0 ? kt_x << t1_shift(m) : {SPW{1'b0}};
       wire [SPW-1:0] tk2 = U2 != 0 ? kt_x << t2_shift(m) : {SPW{1'b0}};
-      wire [SPW-1:0] dr, dy;
-      rpu_indicator_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dr (
-        .a_i(t1_d0_q), .b_i(ta1), .c_i(ta2), .s_o(dr));
-      rpu_indicator_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dy (
-        .a_i(t1_e0_q), .b_i(tk1), .c_i(tk2), .s_o(dy));
-      always @(posedge clk_i) begin
-        t2_dr_q[m*SPW +: SPW] <= dr;
-        t2_dy_q[m*SPW +: SPW] <= dy;
-      end
+      rpu_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dr (
+        .a_i(t1_d0_q), .b_i(ta1), .c_i(ta2), .s_o(t2_dr[m*SPW +: SPW]));
+      rpu_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dy (
+        .a_i(t1_e0_q), .b_i(tk1), .c_i(tk2), .s_o(t2_dy[m*SPW +: SPW]));
     end
   endgenerate
-  reg [PW-1:0] t2_r_q;  // Y = floor(P·2^-s), exact
-  always @(posedge clk_i) t2_r_q <= $signed(t1_coarse_q) >>> t1_scl_q;
+  wire [PW-1:0]        t2_r = $signed(t1_coarse_q) >>> t1_scl_q;  // Y = floor(P·2^-s), exact
+  wire                 t2_valid_q;
+  wire [Lanes*SPW-1:0] t2_dr_q, t2_dy_q;
+  wire [PW-1:0]        t2_r_q;
+  rpu_stage #(.W(2*Lanes*SPW + PW)) u_t2 (
+    .clk_i, .rst_ni, .valid_i(t1_valid_q), .d_i({t2_dr, t2_dy, t2_r}),
+    .valid_o(t2_valid_q), .q_o({t2_dr_q, t2_dy_q, t2_r_q}));
 
   // ===============================================================================================
   // T3: the rotation inputs. Saturation to CW − 1 bits (cordic_in): |v| ≤ 2^(CW−2) passes.
@@ -471,9 +409,9 @@ module rpu_indicator #(
   localparam integer SpHiW  = SPW - SatTop;  // the spiral offsets' bits from SatTop up
   wire [CW-2:0] sat_max = {1'b0, {(CW - 2){1'b1}}};
   wire [CW-2:0] sat_min = {1'b1, {(CW - 2){1'b0}}};
-  reg  [Lanes*CW-1:0] t3_rx_q, t3_ry_q;
-  reg  [Lanes*AW-1:0] t3_ra_q;
-  reg  [Lanes-1:0]    t3_sat_q;
+  wire [Lanes*CW-1:0] t3_rx, t3_ry;
+  wire [Lanes*AW-1:0] t3_ra;
+  wire [Lanes-1:0]    t3_sat;
   // Y (rocket): saturated to YW bits (exact for ρ < r) and to CW − 1 bits (the CORDIC input).
   wire [PW-YW:0]   r_hi_y = t2_r_q[PW-1:YW-1];
   wire [RHiW-1:0] r_hi_c = t2_r_q[PW-1:SatTop];
@@ -489,9 +427,9 @@ module rpu_indicator #(
   wire [AW-1:0] a8  = {t2_angle[AW-4:0], 3'b000};
   wire [AW-1:0] a2  = {t2_angle[AW-2:0], 1'b0};
   wire [AW-1:0] ang_p, ang_m;
-  rpu_indicator_add3 #(.W(AW), .NegB(0), .NegC(0), .Cin(0)) u_angp (
+  rpu_add3 #(.W(AW), .NegB(0), .NegC(0), .Cin(0)) u_angp (
     .a_i(a8), .b_i(a2), .c_i(a9), .s_o(ang_p));
-  rpu_indicator_add3 #(.W(AW), .NegB(0), .NegC(1), .Cin(1)) u_angm (
+  rpu_add3 #(.W(AW), .NegB(0), .NegC(1), .Cin(1)) u_angm (
     .a_i(a8), .b_i(a2), .c_i(a9), .s_o(ang_m));
   wire [CW-1:0] ke2_x  = {{(CW - KF - 2){t2_ke2[KF+1]}}, t2_ke2};
   wire [CW-1:0] ycin_x = {ycin[CW-2], ycin};
@@ -524,42 +462,33 @@ module rpu_indicator #(
         assign in_y = sy_x;
         assign in_a = a4;
       end
-      always @(posedge clk_i) begin
-        t3_rx_q[m*CW +: CW]  <= in_x;
-        t3_ry_q[m*CW +: CW]  <= in_y;
-        t3_ra_q[m*AW +: AW]  <= in_a;
-        t3_sat_q[m]          <= t2_en[m] & ~(fr & fy);
-      end
+      assign t3_rx[m*CW +: CW] = in_x;
+      assign t3_ry[m*CW +: CW] = in_y;
+      assign t3_ra[m*AW +: AW] = in_a;
+      assign t3_sat[m]         = t2_en[m] & ~(fr & fy);
     end
   endgenerate
-  reg [YW-1:0] t3_ysat_q;
-  reg          t3_ovf_roc_q;
-  always @(posedge clk_i) begin
-    t3_ysat_q    <= ysat;
-    t3_ovf_roc_q <= roc2 & t2_fins & ~fit_c;  // the twin saturates Y on the fins only
-  end
   wire unused_t2 = ^{t2_typ[0], t2_typ[3:2]};
+  wire                t3_valid_q;
+  wire [Lanes*CW-1:0] t3_rx_q, t3_ry_q;
+  wire [Lanes*AW-1:0] t3_ra_q;
+  wire [Lanes-1:0]    t3_sat_q;
+  wire [YW-1:0]       t3_ysat_q;
+  wire                t3_ovf_roc_q;
+  // The twin saturates Y on the fins only.
+  rpu_stage #(.W(Lanes*(2*CW + AW + 1) + YW + 1)) u_t3 (
+    .clk_i, .rst_ni, .valid_i(t2_valid_q),
+    .d_i({t3_rx, t3_ry, t3_ra, t3_sat, ysat, roc2 & t2_fins & ~fit_c}),
+    .valid_o(t3_valid_q), .q_o({t3_rx_q, t3_ry_q, t3_ra_q, t3_sat_q, t3_ysat_q, t3_ovf_roc_q}));
 
-  wire [TagW-1:0]  q_tag;
-  wire [4:0]       q_typ;
-  wire [Lanes-1:0] q_en;
-  wire [LW-1:0]    q_y, q_ra;
-  wire [KF:0]      q_sx, q_sy;
-  wire [R2W-1:0]   q_r2;
-  wire [KF+1:0]    q_kd;
-  wire [XSW-1:0]   q_xs, q_ys, q_zs;
-  wire [AW-1:0]    q_angle;
-  wire [CW-1:0]    q_rho;
-  wire             q_fins, q_cyl;
-  assign {q_tag, q_typ, q_en, q_y, q_sx, q_sy, q_r2, q_kd, q_ra, q_xs, q_ys, q_zs, q_angle, q_rho,
-          q_fins, q_cyl} = t3_ctx;
-  wire q_ovf = (q_typ[2] & |t3_sat_q) | t3_ovf_roc_q;
+  // The overflow so far: a spiral lane's offset saturated, or the rocket's fin term.
+  localparam integer CdSpiralO = CDW - TagW - 3;  // the type's spiral bit in t3_ctx
+  wire q_ovf = (t3_ctx[CdSpiralO] & |t3_sat_q) | t3_ovf_roc_q;
 
   // ===============================================================================================
   // Tr: the rotations, one per lane; the context rides in lane 0's tag.
   // ===============================================================================================
-  localparam integer C4W = TagW + 5 + Lanes + LW + 2 * (KF + 1) + R2W + (KF + 2) + LW + 3 * XSW +
-                           AW + CW + 2 + R0W + TurnW + YW + 1;
+  localparam integer C4W = CDW + R0W + TurnW + YW + 1;
   wire [Lanes*CW-1:0] rot_x, rot_y;
   wire                r_valid;
   wire [C4W-1:0]      r_ctx;
@@ -571,8 +500,7 @@ module rpu_indicator #(
         rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(1), .TagW(C4W)) u_rot (
           .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CW +: CW]),
           .y_i(t3_ry_q[m*CW +: CW]), .angle_i(t3_ra_q[m*AW +: AW]),
-          .tag_i({q_tag, q_typ, q_en, q_y, q_sx, q_sy, q_r2, q_kd, q_ra, q_xs, q_ys, q_zs,
-                  q_angle, q_rho, q_fins, q_cyl, t3_r0, t3_at, t3_ysat_q, q_ovf}),
+          .tag_i({t3_ctx, t3_r0, t3_at, t3_ysat_q, q_ovf}),
           .valid_o(vo), .x_o(rot_x[m*CW +: CW]), .y_o(rot_y[m*CW +: CW]), .angle_o(ao),
           .tag_o(r_ctx));
         assign r_valid = vo;
@@ -622,7 +550,7 @@ module rpu_indicator #(
   wire [Lanes-1:0] sp_bit;
   wire [Lanes-1:0] sp_en;
   wire [R2W-1:0]   sp_r2;
-  rpu_indicator_delay #(.W(Lanes + R2W), .D(LSc + 1 + LQ)) u_dl_sp (
+  rpu_delay #(.W(Lanes + R2W), .D(LSc + 1 + LQ)) u_dl_sp (
     .clk_i, .valid_i(vr[0]), .d_i({r_en, r_r2}), .d_o({sp_en, sp_r2}));
   generate
     for (m = 0; m < Lanes; m = m + 1) begin : g_sp
@@ -657,7 +585,7 @@ module rpu_indicator #(
         .tag_i(1'b0), .valid_o(v4), .p_o(ww), .tag_o(t4));
       // r2 − 1 − u² − w² ≥ 0 (each square ≤ 2^(2LW): its low SQW bits).
       wire [2*LW+2:0] diff;
-      rpu_indicator_add3 #(.W(2 * LW + 3), .NegB(1), .NegC(1), .Cin(1)) u_cmp (
+      rpu_add3 #(.W(2 * LW + 3), .NegB(1), .NegC(1), .Cin(1)) u_cmp (
         .a_i({2'b00, sp_r2}), .b_i({2'b00, uu[SQW-1:0]}), .c_i({2'b00, ww[SQW-1:0]}), .s_o(diff));
       reg bit_q;
       always @(posedge clk_i) bit_q <= sp_en[m] & ~big & ~diff[2*LW+2];
@@ -682,13 +610,13 @@ module rpu_indicator #(
       wire [HW-1:0] ha1 = U1 != 0 ? at_h << t1_shift(m) : {HW{1'b0}};
       wire [HW-1:0] ha2 = U2 != 0 ? at_h << t2_shift(m) : {HW{1'b0}};
       wire [HW-1:0] h;
-      rpu_indicator_add3 #(.W(HW), .NegB(0), .NegC(N2), .Cin(N2)) u_h (
+      rpu_add3 #(.W(HW), .NegB(0), .NegC(N2), .Cin(N2)) u_h (
         .a_i(r0_2), .b_i(ha1), .c_i(ha2), .s_o(h));
       always @(posedge clk_i) sn_h_q[m*HW +: HW] <= h;
     end
   endgenerate
   wire [CW-1:0] sn_rho1;
-  rpu_indicator_delay #(.W(CW), .D(1)) u_dl_rho1 (
+  rpu_delay #(.W(CW), .D(1)) u_dl_rho1 (
     .clk_i, .valid_i(vr[0]), .d_i(r_rho), .d_o(sn_rho1));
   wire [PJW-1:0] rho_p = {{(PJW - CW){1'b0}}, sn_rho1};
   reg  [(Lanes+1)*PJW-1:0] sn_p_q;  // P_0 .. P_Lanes
@@ -705,7 +633,7 @@ module rpu_indicator #(
         wire [PJW-1:0] b1 = hx << t1_shift(m);
         wire [PJW-1:0] b2 = U2 != 0 ? hx << t2_shift(m) : {PJW{1'b0}};
         wire [PJW-1:0] pj;
-        rpu_indicator_add3 #(.W(PJW), .NegB(1), .NegC(SubC), .Cin(1 + SubC)) u_p (
+        rpu_add3 #(.W(PJW), .NegB(1), .NegC(SubC), .Cin(1 + SubC)) u_p (
           .a_i(rho_p), .b_i(b1), .c_i(b2), .s_o(pj));
         always @(posedge clk_i) sn_p_q[m*PJW +: PJW] <= pj;
       end
@@ -756,7 +684,7 @@ module rpu_indicator #(
     .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(r_y), .b_i(r_y), .tag_i(1'b0),
     .valid_o(v_yy), .p_o(yy), .tag_o(t_yy));
   wire [Lanes-1:0] sn_en;
-  rpu_indicator_delay #(.W(Lanes), .D(4 + LN)) u_dl_sn (
+  rpu_delay #(.W(Lanes), .D(4 + LN)) u_dl_sn (
     .clk_i, .valid_i(vr[0]), .d_i(r_en), .d_o(sn_en));
   wire [Lanes-1:0] sn_bit;
   generate
@@ -801,7 +729,7 @@ module rpu_indicator #(
     .clk_i, .rst_ni, .valid_i(vr[1]), .a_i(ey_q), .b_i(ey_q), .tag_i(ey_big_q),
     .valid_o(v8), .p_o(eyy), .tag_o(ey_big));
   wire [R2W-1:0] e_r2;
-  rpu_indicator_delay #(.W(R2W), .D(LXY)) u_dl_er2 (
+  rpu_delay #(.W(R2W), .D(LXY)) u_dl_er2 (
     .clk_i, .valid_i(vr[0]), .d_i(r_r2), .d_o(e_r2));
   // ER+LXY+1: (x·sx)² + (z·sz)²; s²m² = r2 − (y·sy)² and whether it is > 0.
   wire [LHW-1:0]  lhs   = {1'b0, exx[LHW-2:0]} + {1'b0, ezz[LHW-2:0]};  // each < 2^(2LW+4)
@@ -823,7 +751,7 @@ module rpu_indicator #(
   // ER+LXY+2: the ellipsoid: r2 − 1 − lhs − (y·sy)² ≥ 0.
   localparam integer EDW = LHW + 2;
   wire [EDW-1:0] ediff;
-  rpu_indicator_add3 #(.W(EDW), .NegB(1), .NegC(1), .Cin(1)) u_ell (
+  rpu_add3 #(.W(EDW), .NegB(1), .NegC(1), .Cin(1)) u_ell (
     .a_i({{(EDW - R2W){1'b0}}, e_r2_q}), .b_i({2'b00, e_lhs_q}),
     .c_i({{(EDW - SQW){1'b0}}, e_yy_q}), .s_o(ediff));
   reg el_bit_q;
@@ -836,7 +764,7 @@ module rpu_indicator #(
   // rhs = floor(k2·s²m²·2^-KF) against lhs = (x·sx)² + (z·sz)² (in the output stage).
   // ===============================================================================================
   wire [KW-1:0] kk;
-  rpu_indicator_add3 #(.W(KW), .NegB(0), .NegC(0), .Cin(0)) u_k (
+  rpu_add3 #(.W(KW), .NegB(0), .NegC(0), .Cin(0)) u_k (
     .a_i({{(KW - KF - 2){r_kd[KF+1]}}, r_kd}),
     .b_i({{(KW - CW){rot_y[0*CW + CW-1]}}, rot_y[0*CW +: CW]}),
     .c_i({{(KW - CW){rot_y[1*CW + CW-1]}}, rot_y[1*CW +: CW]}), .s_o(kk));
@@ -849,7 +777,7 @@ module rpu_indicator #(
     .valid_o(v9), .p_o(k2p), .tag_o(t9));
   wire [K2W-1:0] k2 = k2p[KF +: K2W];  // k'² < 2^(2KW−2)
   wire [D2W-1:0] re_d2;
-  rpu_indicator_delay #(.W(D2W), .D(TKD - LXY - 1)) u_dl_d2 (
+  rpu_delay #(.W(D2W), .D(TKD - LXY - 1)) u_dl_d2 (
     .clk_i, .valid_i(vr[LXY+1]), .d_i(e_d2_q), .d_o(re_d2));
   wire [K2W+D2W-1:0] rhp;
   wire               v10, t10;
@@ -859,7 +787,7 @@ module rpu_indicator #(
   wire [RHW-1:0] rhs = rhp[KF +: RHW];
   wire [LHW-1:0] re_lhs;
   wire           re_d2pos;
-  rpu_indicator_delay #(.W(LHW + 1), .D(BLast - LXY - 1)) u_dl_lhs (
+  rpu_delay #(.W(LHW + 1), .D(BLast - LXY - 1)) u_dl_lhs (
     .clk_i, .valid_i(vr[LXY+1]), .d_i({e_lhs_q, e_d2pos_q}), .d_o({re_lhs, re_d2pos}));
   localparam integer CmpW = (RHW > LHW ? RHW : LHW) + 1;
   wire re_in = re_d2pos & ({{(CmpW - LHW){1'b0}}, re_lhs} < {{(CmpW - RHW){1'b0}}, rhs});
@@ -871,7 +799,7 @@ module rpu_indicator #(
   wire [RW-1:0] ro_y  = r_cyl ? {RW{1'b0}} : {{(RW - YW){r_ysat[YW-1]}}, r_ysat};
   wire [RW-1:0] ro_ys = r_fins ? {{(RW - CW){rot_y[CW-1]}}, rot_y[0 +: CW]} : {RW{1'b0}};
   wire [RW-1:0] ro_r;
-  rpu_indicator_add3 #(.W(RW), .NegB(1), .NegC(0), .Cin(1)) u_ro (
+  rpu_add3 #(.W(RW), .NegB(1), .NegC(0), .Cin(1)) u_ro (
     .a_i({{(RW - LW){r_ra[LW-1]}}, r_ra}), .b_i(ro_y), .c_i(ro_ys), .s_o(ro_r));
   reg [RW-1:0] ro_r_q;
   always @(posedge clk_i) ro_r_q <= ro_r;
@@ -884,13 +812,13 @@ module rpu_indicator #(
   // ===============================================================================================
   wire             o_el, o_ro;
   wire [Lanes-1:0] o_sp, o_sn;
-  rpu_indicator_delay #(.W(1), .D(BLast - BEl)) u_dl_oel (
+  rpu_delay #(.W(1), .D(BLast - BEl)) u_dl_oel (
     .clk_i, .valid_i(vr[BEl]), .d_i(el_bit_q), .d_o(o_el));
-  rpu_indicator_delay #(.W(Lanes), .D(BLast - BSp)) u_dl_osp (
+  rpu_delay #(.W(Lanes), .D(BLast - BSp)) u_dl_osp (
     .clk_i, .valid_i(vr[BSp]), .d_i(sp_bit), .d_o(o_sp));
-  rpu_indicator_delay #(.W(Lanes), .D(BLast - BSn)) u_dl_osn (
+  rpu_delay #(.W(Lanes), .D(BLast - BSn)) u_dl_osn (
     .clk_i, .valid_i(vr[BSn]), .d_i(sn_bit), .d_o(o_sn));
-  rpu_indicator_delay #(.W(1), .D(BLast - BRo)) u_dl_oro (
+  rpu_delay #(.W(1), .D(BLast - BRo)) u_dl_oro (
     .clk_i, .valid_i(vr[BRo]), .d_i(ro_bit_q), .d_o(o_ro));
   localparam integer COW = TagW + 5 + AW + CW + 1;
   wire [TagW-1:0] o_tag;
@@ -898,24 +826,19 @@ module rpu_indicator #(
   wire [AW-1:0]   o_angle;
   wire [CW-1:0]   o_rho;
   wire            o_ovf;
-  rpu_indicator_delay #(.W(COW), .D(BLast)) u_dl_out (
+  rpu_delay #(.W(COW), .D(BLast)) u_dl_out (
     .clk_i, .valid_i(vr[0]), .d_i({r_tag, r_typ, r_angle, r_rho, r_ovf}),
     .d_o({o_tag, o_typ, o_angle, o_rho, o_ovf}));
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= vr[BLast];
-  end
+  wire             o_inside = (o_typ[0] & o_el) | (o_typ[1] & re_in) | (o_typ[2] & |o_sp) |
+                              (o_typ[3] & |o_sn) | (o_typ[4] & o_ro);
+  wire [Lanes-1:0] o_turns  = ({Lanes{o_typ[2]}} & o_sp) | ({Lanes{o_typ[3]}} & o_sn);
+  wire [AW-1:0]    o_ang    = o_typ[0] || o_typ == 5'b0 ? {AW{1'b0}} : o_angle;
+  wire [CW-1:0]    o_rh     = o_typ[2] || o_typ[3] || o_typ[4] ? o_rho : {CW{1'b0}};
   // Loaded only with a valid point.
-  always @(posedge clk_i) if (vr[BLast]) begin
-    inside_o      <= (o_typ[0] & o_el) | (o_typ[1] & re_in) | (o_typ[2] & |o_sp) |
-                     (o_typ[3] & |o_sn) | (o_typ[4] & o_ro);
-    turn_inside_o <= ({Lanes{o_typ[2]}} & o_sp) | ({Lanes{o_typ[3]}} & o_sn);
-    angle_o       <= o_typ[0] || o_typ == 5'b0 ? {AW{1'b0}} : o_angle;
-    rho_o         <= o_typ[2] || o_typ[3] || o_typ[4] ? o_rho : {CW{1'b0}};
-    ovf_o         <= o_ovf;
-    tag_o         <= o_tag;
-  end
+  rpu_stage #(.W(1 + Lanes + AW + CW + 1 + TagW), .Hold(1)) u_out (
+    .clk_i, .rst_ni, .valid_i(vr[BLast]), .d_i({o_inside, o_turns, o_ang, o_rh, o_ovf, o_tag}),
+    .valid_o, .q_o({inside_o, turn_inside_o, angle_o, rho_o, ovf_o, tag_o}));
 endmodule
 
 `default_nettype wire

@@ -46,9 +46,9 @@ module rpu_surface_admit #(
   // j·Period cycles after its admission (j = 1 .. Returns), when it comes back to the ring's
   // input, its counter is the head and holds Returns − j + 1, so ready_o is low and nothing
   // else is admitted into its slot; after its last return the slot is free again.
-  reg f_past_valid = 1'b0;
-  always @(posedge clk_i) f_past_valid <= 1'b1;
 `ifdef RPU_FORMAL_ADMIT
+  reg f_past_valid = 1'b0;  // only the standalone proof's reset assumption reads it
+  always @(posedge clk_i) f_past_valid <= 1'b1;
   always @(*) if (!f_past_valid) assume(!rst_ni);
 `endif
   localparam integer FEnd = (Returns + 1) * Period;  // age at which the item's slot is free

@@ -32,11 +32,7 @@
 `default_nettype none
 
 module rpu_surface_ip #(
-  parameter integer SurfW    = 24,  // LW: signed width of surface-local coordinates (16..36)
-  parameter integer AngleW   = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
-  parameter integer Turns    = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
-  parameter integer N        = 16,  // result bits of τ (1..40)
-  parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
+`include "rpu_surface_ip_params.vh"
   parameter integer Unrolled = 0,   // 1: K + 1 pass units, 0: one pass unit used K + 1 times
   parameter integer CtxW     = 1,   // caller's context passed through (>= 1)
   // Derived (do not override).
@@ -57,30 +53,13 @@ module rpu_surface_ip #(
   input  wire               last_turn_i,
   // The surface's indicator fields (SurfaceDesc; rpu_indicator's ports and formats).
   input  wire [2:0]         type_i,
-  input  wire [3:0]         full_turns_i,
-  input  wire [KF:0]        sx_i,
-  input  wire [KF:0]        sy_i,
-  input  wire [KF:0]        sz_i,
-  input  wire [R2W-1:0]     r2_i,
-  input  wire [KF+1:0]      kd_i,
-  input  wire [KF+1:0]      ke2_i,
-  input  wire [MW-1:0]      y_angle_m_i,
-  input  wire [7:0]         y_angle_s_i,
-  input  wire [SurfW-1:0]   rho0_i,
-  input  wire [TurnW-1:0]   a_turn_i,
-  input  wire [TurnW-1:0]   k_turn_i,
-  input  wire [SurfW-1:0]   rocket_a_i,
-  input  wire [SurfW-1:0]   rocket_b_i,
-  input  wire [MW-1:0]      fin_m_i,
-  input  wire [7:0]         fin_s_i,
-  input  wire [MW-1:0]      cone_m_i,
-  input  wire [7:0]         cone_s_i,
+`include "rpu_surface_ind_ports.vh"
   input  wire [CtxW-1:0]    ctx_i,
-  output reg                valid_o,
-  output reg                hit_o,
-  output reg  [N-1:0]       tau_o,
-  output reg                ovf_o,
-  output reg  [CtxW-1:0]    ctx_o
+  output wire               valid_o,
+  output wire               hit_o,
+  output wire [N-1:0]       tau_o,
+  output wire               ovf_o,
+  output wire [CtxW-1:0]    ctx_o
 );
 `include "rpu_mul_latency.vh"
 `include "rpu_surface_latency.vh"
@@ -122,6 +101,10 @@ module rpu_surface_ip #(
     .la_i(D[DLaO +: 3*LW]), .lab_i(D[DLabO +: 3*LabW]), .x_negative_i(D[DBranchO + 1]), \
     .last_turn_i(D[DBranchO]), .desc_i(D[DDescO +: SdW])
 
+  // Both forms' output: the item leaving after pass K, its state and its ctx.
+  wire            out_valid;
+  wire [StW-1:0]  out_st;
+  wire [CtxW-1:0] out_ctx;
   generate
     if (Unrolled != 0) begin : g_unrolled
       assign ready_o = 1'b1;
@@ -129,9 +112,7 @@ module rpu_surface_ip #(
       wire [K+1:0]         v  /* verilator split_var */;
       wire [(K+2)*StW-1:0] st /* verilator split_var */;
       wire [(K+2)*DW-1:0]  dt /* verilator split_var */;
-      assign v[0] = valid_i;
-      assign st[0 +: StW] = st_in;
-      assign dt[0 +: DW] = data_in;
+      assign {v[0], st[0 +: StW], dt[0 +: DW]} = {valid_i, st_in, data_in};
       genvar k;
       for (k = 0; k <= K; k = k + 1) begin : g_pass
         wire [DW-1:0] d = dt[k*DW +: DW];
@@ -145,18 +126,10 @@ module rpu_surface_ip #(
           .ctx_o(dt[(k+1)*DW +: DW]));
         wire unused_k = ^{k_unused, sh_unused};
       end
-      wire [StW-1:0] st_out = st[(K+1)*StW +: StW];
-      always @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) valid_o <= 1'b0;
-        else         valid_o <= v[K+1];
-      end
-      always @(posedge clk_i) begin
-        hit_o <= st_out[1];
-        tau_o <= st_out[StW-1 -: N];
-        ovf_o <= st_out[0];
-        ctx_o <= dt[(K+1)*DW + DCtxO +: CtxW];
-      end
-      wire unused_out = ^{st_out[3:2], dt[(K+1)*DW +: DCtxO]};
+      assign out_valid = v[K+1];
+      assign out_st    = st[(K+1)*StW +: StW];
+      assign out_ctx   = dt[(K+1)*DW + DCtxO +: CtxW];
+      wire unused_out = ^dt[(K+1)*DW +: DCtxO];
     end else begin : g_iterative
       localparam integer PhW = $clog2(L);
       localparam integer   LastI  = L - 1;
@@ -201,20 +174,18 @@ module rpu_surface_ip #(
         `RPU_SURFACE_PASS_DATA(in_d), .ctx_i(1'b0),
         .valid_o(ret_valid), .k_o(ret_k), .shift_o(ret_shift), .state_o(ret_st),
         .ctx_o(ret_ctx_unused));
-      always @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) valid_o <= 1'b0;
-        else         valid_o <= leave;
-      end
-      always @(posedge clk_i) begin
-        hit_o <= ret_st[1];
-        tau_o <= ret_st[StW-1 -: N];
-        ovf_o <= ret_st[0];
-        ctx_o <= rd_q[DCtxO +: CtxW];
-      end
-      wire unused_iter = ^{ret_ctx_unused, ret_st[3:2]};
+      assign out_valid = leave;
+      assign out_st    = ret_st;
+      assign out_ctx   = rd_q[DCtxO +: CtxW];
+      wire unused_iter = ret_ctx_unused;
     end
   endgenerate
   `undef RPU_SURFACE_PASS_DATA
+  rpu_stage #(.W(1 + N + 1 + CtxW)) u_out (
+    .clk_i, .rst_ni, .valid_i(out_valid),
+    .d_i({out_st[1], out_st[StW-1 -: N], out_st[0], out_ctx}),
+    .valid_o, .q_o({hit_o, tau_o, ovf_o, ctx_o}));
+  wire unused_st = ^out_st[3:2];  // lo, hi
 endmodule
 
 `default_nettype wire

@@ -36,11 +36,7 @@
 `default_nettype none
 
 module rpu_surface_ip_step #(
-  parameter integer SurfW  = 24,  // LW: signed width of surface-local coordinates (16..36)
-  parameter integer AngleW = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
-  parameter integer Turns  = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
-  parameter integer N      = 16,  // result bits of τ (1..40)
-  parameter integer N1     = 2,   // bits per step (1..8), N % N1 == 0
+`include "rpu_surface_ip_params.vh"
   parameter integer Pass   = -1,  // this unit's pass 0..N/N1, or −1: k_i at run time
   parameter integer CtxW   = 1,   // caller's context passed through (>= 1)
   // Derived (do not override).
@@ -63,11 +59,11 @@ module rpu_surface_ip_step #(
   input  wire               last_turn_i,
   input  wire [DescW-1:0]   desc_i,        // the indicator's descriptor (rpu_surface_desc.vh)
   input  wire [CtxW-1:0]    ctx_i,
-  output reg                valid_o,
-  output reg  [KW-1:0]      k_o,           // the next pass: k + 1
-  output reg  [ShW-1:0]     shift_o,       // its shift N − N1·(k + 1)
-  output reg  [StW-1:0]     state_o,
-  output reg  [CtxW-1:0]    ctx_o
+  output wire               valid_o,
+  output wire [KW-1:0]      k_o,           // the next pass: k + 1
+  output wire [ShW-1:0]     shift_o,       // its shift N − N1·(k + 1)
+  output wire [StW-1:0]     state_o,
+  output wire [CtxW-1:0]    ctx_o
 );
 `include "rpu_mul_latency.vh"
 `include "rpu_surface_latency.vh"
@@ -110,9 +106,7 @@ module rpu_surface_ip_step #(
   wire [ShW-1:0] shift   = Pass < 0 ? shift_i : ShPass[ShW-1:0];      // N − N1·k (k >= 1)
   wire [SbW-1:0] sb_in   = {k_in, shift, state_i, ctx_i, la_i, x_negative_i, last_turn_i, desc_i};
 
-  wire [NC*3*PW-1:0] prod;
-  wire               p_valid;
-  wire [SbW-1:0]     p_sb;
+  wire [NC*3*MW_-1:0] m_op;  // lane e: {3{m_e}}, each as a non-negative signed operand
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_lane_m
       localparam [N:0] JE = e + 1;                      // the lane's j in a step
@@ -120,33 +114,19 @@ module rpu_surface_ip_step #(
                                    : {(N+1){1'b0}};
       wire [N:0] m_step = {1'b0, tau_in} | (JE << shift);
       wire [N:0] m      = start ? M0 : m_step;
-      for (c = 0; c < 3; c = c + 1) begin : g_comp
-        if (e == 0 && c == 0) begin : g_carry
-          rpu_mul #(.AW(LabW), .BW(MW_), .Signed(1), .TagW(SbW)) u_mul (
-            .clk_i, .rst_ni, .valid_i, .a_i(lab_i[c*LabW +: LabW]), .b_i({1'b0, m}),
-            .tag_i(sb_in), .valid_o(p_valid), .p_o(prod[(3*e + c)*PW +: PW]), .tag_o(p_sb));
-        end else begin : g_plain
-          wire v_unused, t_unused;
-          rpu_mul #(.AW(LabW), .BW(MW_), .Signed(1), .TagW(1)) u_mul (
-            .clk_i, .rst_ni, .valid_i, .a_i(lab_i[c*LabW +: LabW]), .b_i({1'b0, m}),
-            .tag_i(1'b0), .valid_o(v_unused), .p_o(prod[(3*e + c)*PW +: PW]), .tag_o(t_unused));
-          wire unused_plain = ^{v_unused, t_unused};
-        end
-      end
+      assign m_op[e*3*MW_ +: 3*MW_] = {3{1'b0, m}};
     end
   endgenerate
+  wire [NC*3*PW-1:0] prod;  // lane e, component c at index 3e + c
+  wire               p_valid;
+  wire [SbW-1:0]     p_sb;
+  rpu_mul_vec #(.Count(3*NC), .AW(LabW), .BW(MW_), .Signed(1), .TagW(SbW)) u_mul (
+    .clk_i, .rst_ni, .valid_i, .a_i({NC{lab_i}}), .b_i(m_op), .tag_i(sb_in),
+    .valid_o(p_valid), .p_o(prod), .tag_o(p_sb));
 
   // ---- l = lA' + floor(lAB'·m·2^-N): exact in LW bits (a point of the piece lA' .. lB') ----
-  wire [3*LW-1:0] p_la = p_sb[2 + DescW +: 3*LW];
-  reg             s1_valid_q;
-  reg [NC*3*LW-1:0] s1_l_q;
-  reg [ItW-1:0]   s1_it_q;       // {k, shift, state, ctx}
-  reg [1:0]       s1_branch_q;   // {x_negative, last_turn}
-  reg [DescW-1:0] s1_desc_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) s1_valid_q <= 1'b0;
-    else         s1_valid_q <= p_valid;
-  end
+  wire [3*LW-1:0]    p_la = p_sb[2 + DescW +: 3*LW];
+  wire [NC*3*LW-1:0] l;
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_lane_l
       for (c = 0; c < 3; c = c + 1) begin : g_comp
@@ -154,16 +134,19 @@ module rpu_surface_ip_step #(
         wire [FW-1:0] f   = p[PW-1:N];                              // p >>> N (floor)
         wire [LW-1:0] la  = p_la[c*LW +: LW];
         wire [FW-1:0] sum = {{(FW-LW){la[LW-1]}}, la} + f;
-        always @(posedge clk_i) s1_l_q[(3*e + c)*LW +: LW] <= sum[LW-1:0];  // exact (above)
+        assign l[(3*e + c)*LW +: LW] = sum[LW-1:0];  // exact (above)
         wire unused_sum = ^{sum[FW-1:LW], p[N-1:0]};  // the bits the floor drops
       end
     end
   endgenerate
-  always @(posedge clk_i) begin
-    s1_it_q     <= p_sb[SbW-1 -: ItW];
-    s1_branch_q <= p_sb[DescW +: 2];
-    s1_desc_q   <= p_sb[DescW-1:0];
-  end
+  wire               s1_valid_q;
+  wire [NC*3*LW-1:0] s1_l_q;
+  wire [ItW-1:0]     s1_it_q;       // {k, shift, state, ctx}
+  wire [1:0]         s1_branch_q;   // {x_negative, last_turn}
+  wire [DescW-1:0]   s1_desc_q;
+  rpu_stage #(.W(NC*3*LW + ItW + 2 + DescW)) u_s1 (
+    .clk_i, .rst_ni, .valid_i(p_valid), .d_i({l, p_sb[SbW-1 -: ItW], p_sb[0 +: DescW + 2]}),
+    .valid_o(s1_valid_q), .q_o({s1_l_q, s1_it_q, s1_branch_q, s1_desc_q}));
 
   // ---- the indicators ----
   wire [NC-1:0]  ind_inside, ind_ovf;
@@ -251,34 +234,26 @@ module rpu_surface_ip_step #(
     end
   endgenerate
   wire          lanes_ovf = |(ind_ovf & (a_start ? use_start : use_step));
+  // The next pass: k + 1 and N − N1·(k + 1), N1 below this pass's shift (N at k = 0).
+  wire [KW-1:0]  a_knext  = a_k + 1'b1;
+  wire [ShW-1:0] a_shnext = (a_start ? N[ShW-1:0] : a_shift) - N1[ShW-1:0];
 
-  reg            b_valid_q;
-  reg [KW-1:0]   b_k_q;
-  reg [ShW-1:0]  b_shift_q;
-  reg [KW-1:0]   b_knext_q;              // k + 1
-  reg [ShW-1:0]  b_shnext_q;             // N − N1·(k + 1): N1 below this pass's shift (N at k = 0)
-  reg [StW-1:0]  b_st_q;
-  reg [CtxW-1:0] b_ctx_q;
-  reg [J:0]      b_s_q;
-  reg [J-1:0]    b_chg_q;
-  reg [1:0]      b_ends_q;                 // pass 0: {s(0), s(2^N)}
-  reg            b_ovf_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) b_valid_q <= 1'b0;
-    else         b_valid_q <= ind_valid;
-  end
-  always @(posedge clk_i) begin
-    b_k_q      <= a_k;
-    b_shift_q  <= a_shift;
-    b_knext_q  <= a_k + 1'b1;
-    b_shnext_q <= (a_start ? N[ShW-1:0] : a_shift) - N1[ShW-1:0];
-    b_st_q     <= a_st;
-    b_ctx_q    <= ind_it[CtxW-1:0];
-    b_s_q      <= s_in;
-    b_chg_q    <= s_in[J-1:0] ^ s_in[J:1];
-    b_ends_q   <= ends;
-    b_ovf_q    <= lanes_ovf;
-  end
+  wire            b_valid_q;
+  wire [KW-1:0]   b_k_q, b_knext_q;
+  wire [ShW-1:0]  b_shift_q, b_shnext_q;
+  wire [StW-1:0]  b_st_q;
+  wire [CtxW-1:0] b_ctx_q;
+  wire [J:0]      b_s_q;
+  wire [J-1:0]    b_chg_q;
+  wire [1:0]      b_ends_q;                // pass 0: {s(0), s(2^N)}
+  wire            b_ovf_q;
+  rpu_stage #(.W(2*KW + 2*ShW + StW + CtxW + 2*J + 4)) u_b (
+    .clk_i, .rst_ni, .valid_i(ind_valid),
+    .d_i({a_k, a_knext, a_shift, a_shnext, a_st, ind_it[CtxW-1:0], s_in, s_in[J-1:0] ^ s_in[J:1],
+          ends, lanes_ovf}),
+    .valid_o(b_valid_q),
+    .q_o({b_k_q, b_knext_q, b_shift_q, b_shnext_q, b_st_q, b_ctx_q, b_s_q, b_chg_q, b_ends_q,
+          b_ovf_q}));
 
   // ---- the one-hot of the lowest change bit, the AND-OR select, the next state ----
   wire [N-1:0]   b_tau   = b_st_q[StW-1 -: N];
@@ -323,16 +298,9 @@ module rpu_surface_ip_step #(
       st_next = {b_tau | tau_sel, lo_sel, hi_sel, 1'b1, b_sovf | b_ovf_q};
   end
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= b_valid_q;
-  end
-  always @(posedge clk_i) begin
-    k_o     <= b_knext_q;
-    shift_o <= b_shnext_q;
-    state_o <= st_next;
-    ctx_o   <= b_ctx_q;
-  end
+  rpu_stage #(.W(KW + ShW + StW + CtxW)) u_out (
+    .clk_i, .rst_ni, .valid_i(b_valid_q), .d_i({b_knext_q, b_shnext_q, st_next, b_ctx_q}),
+    .valid_o, .q_o({k_o, shift_o, state_o, ctx_o}));
 endmodule
 
 `default_nettype wire

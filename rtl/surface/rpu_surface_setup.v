@@ -94,15 +94,7 @@ module rpu_surface_setup #(
   input  wire [3*DirW-1:0]    vhat_i,        // v̂, Q(2.FV)
   input  wire [3*CoordW-1:0]  c0_i,          // bounding-sphere centre, LSB
   input  wire [R2W-1:0]       r2_i,          // bounding-sphere radius², LSB², unsigned
-  input  wire [3*CoordW-1:0]  origin_i,      // LSB
-  input  wire [9*MantW-1:0]   to_local_i,    // M, row-major, signed entries
-  input  wire [6:0]           to_local_s_i,  // unsigned
-  input  wire [2:0]           type_i,        // scene::SurfaceType
-  input  wire [SurfW-1:0]     y_min_i,       // llsb, signed
-  input  wire [SurfW-1:0]     y_max_i,       // llsb, signed
-  input  wire [AngleW-1:0]    end_angle_i,   // binary angle
-  input  wire [ConstW-1:0]    end_cos_i,     // Q(1.KF), signed
-  input  wire [ConstW-1:0]    end_sin_i,     // Q(1.KF), signed
+`include "rpu_surface_setup_ports.vh"
   input  wire [1:0]           piece_i,       // 0..2
   input  wire [TagW-1:0]      tag_i,
   output wire                 valid_o,
@@ -185,38 +177,13 @@ module rpu_surface_setup #(
   wire [TFrac+2:0]   sp_beta;
   wire               sp_ovf;
   wire               sp_tag;
-  rpu_sphere #(
-    .CoordW (CoordW),
-    .DirFrac(DirFrac),
-    .TFrac  (TFrac),
-    .InvW   (InvW),
-    .SqrtW  (SqrtW),
-    .TagW   (1)
-  ) u_sphere (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .valid_i     (valid_i),
-    .eye_i       (eye_i),
-    .vhat_i      (vhat_i),
-    .c0_i        (c0_i),
-    .r2_i        (r2_i),
-    .p1_i        ({3*CW{1'b0}}),
-    .d_i         ({3*DiffW{1'b0}}),
-    .inv_m_i     ({InvW{1'b0}}),
-    .inv_s_i     (7'd0),
-    .tag_i       (1'b0),
-    .valid_o     (sp_valid),
-    .pred1_o     (sp_pred1),
-    .tc_o        (sp_tc),
-    .half_chord_o(sp_hc),
-    .a_o         (sp_a),
-    .b_o         (sp_b),
-    .ab_o        (sp_ab),
-    .alpha_o     (sp_alpha),
-    .beta_o      (sp_beta),
-    .ovf_o       (sp_ovf),
-    .tag_o       (sp_tag)
-  );
+  rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
+               .TagW(1)) u_sphere (
+    .clk_i, .rst_ni, .valid_i, .eye_i, .vhat_i, .c0_i, .r2_i, .p1_i({3*CW{1'b0}}),
+    .d_i({3*DiffW{1'b0}}), .inv_m_i({InvW{1'b0}}), .inv_s_i(7'd0), .tag_i(1'b0),
+    .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc), .half_chord_o(sp_hc), .a_o(sp_a),
+    .b_o(sp_b), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta), .ovf_o(sp_ovf),
+    .tag_o(sp_tag));
   wire unused_sp = ^{sp_tc, sp_hc, sp_alpha, sp_beta, sp_tag};
 
   // The descriptor word, field by field.
@@ -232,35 +199,16 @@ module rpu_surface_setup #(
   localparam integer OffPiece  = OffType + 3;
   localparam integer OffTag    = OffPiece + 2;
   localparam integer DescW     = OffTag + TagW;
-  wire [DescW-1:0] desc_in;
-  assign desc_in[OffOrigin +: 3*CW] = origin_i;
-  assign desc_in[OffM +: 9*MW]      = to_local_i;
-  assign desc_in[OffS +: ShW]       = to_local_s_i;
-  assign desc_in[OffYMin +: LW]     = y_min_i;
-  assign desc_in[OffYMax +: LW]     = y_max_i;
-  assign desc_in[OffSin +: KW]      = end_sin_i;
-  assign desc_in[OffCos +: KW]      = end_cos_i;
-  assign desc_in[OffEnd +: AngleW]  = end_angle_i;
-  assign desc_in[OffType +: 3]      = type_i;
-  assign desc_in[OffPiece +: 2]     = piece_i;
-  assign desc_in[OffTag +: TagW]    = tag_i;
+  // The fields in the offsets' order, MSB first.
+  wire [DescW-1:0] desc_in = {tag_i, piece_i, type_i, end_angle_i, end_cos_i, end_sin_i, y_max_i,
+                              y_min_i, to_local_s_i, to_local_i, origin_i};
 
   wire             desc_wr_ready;
   wire             desc_valid;
   wire [DescW-1:0] desc;
-  rpu_fifo #(
-    .Width    (DescW),
-    .Log2Depth(FifoLog2)
-  ) u_desc (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .wr_valid_i(valid_i),
-    .wr_ready_o(desc_wr_ready),
-    .wr_data_i (desc_in),
-    .rd_valid_o(desc_valid),
-    .rd_ready_i(sp_valid),
-    .rd_data_o (desc)
-  );
+  rpu_fifo #(.Width(DescW), .Log2Depth(FifoLog2)) u_desc (
+    .clk_i, .rst_ni, .wr_valid_i(valid_i), .wr_ready_o(desc_wr_ready), .wr_data_i(desc_in),
+    .rd_valid_o(desc_valid), .rd_ready_i(sp_valid), .rd_data_o(desc));
 `ifndef SYNTHESIS
   // The FIFO never fills (it holds at most Ls items) and always has the item the sphere unit
   // delivers.
@@ -289,30 +237,22 @@ module rpu_surface_setup #(
   wire            end_nz = |end_angle;
   wire            end_lo = ~end_angle[AngleW-1];             // end angle below half a turn
   wire [6*DiffW-1:0] q;  // {B − origin, A − origin}
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : g_q
-      wire signed [DiffW-1:0] ok = {origin[k*CW+CW-1], origin[k*CW +: CW]};
-      wire signed [DiffW-1:0] ak = {sp_a[k*CW+CW-1], sp_a[k*CW +: CW]};
-      wire signed [DiffW-1:0] bk = {sp_b[k*CW+CW-1], sp_b[k*CW +: CW]};
-      assign q[k*DiffW +: DiffW]       = ak - ok;
-      assign q[(3+k)*DiffW +: DiffW]   = bk - ok;
-    end
-  endgenerate
+  rpu_surface_vsub #(.Count(6), .InW(CW)) u_q (.a_i({sp_b, sp_a}), .b_i({2{origin}}), .d_o(q));
 
   // The context from here to the local transform's sums:
   // {tag, piece, az, end_nz, end_lo, cos, sin, y_max, y_min, s, A, AB, pred1, sovf}.
-  localparam integer C1W = TagW + 2 + 3 + 2 * KW + 2 * LW + ShW + 3 * CW + 3 * DiffW + 2;
-  reg [6*DiffW-1:0] q1_q;
-  reg [9*MW-1:0]    m1_q;
-  reg [C1W-1:0]     c1_q;
-  reg               valid1_q;
-  always @(posedge clk_i) begin
-    q1_q <= q;
-    m1_q <= desc[OffM +: 9*MW];
-    c1_q <= {desc[OffTag +: TagW], desc[OffPiece +: 2], az, end_nz, end_lo,
-             desc[OffCos +: KW], desc[OffSin +: KW], desc[OffYMax +: LW], desc[OffYMin +: LW],
-             desc[OffS +: ShW], sp_a, sp_ab, sp_pred1, sp_ovf};
-  end
+  localparam integer C1W  = TagW + 2 + 3 + 2 * KW + 2 * LW + ShW + 3 * CW + 3 * DiffW + 2;
+  localparam integer C1SO = 2 + 3 * DiffW + 3 * CW;  // s in the context
+  wire               valid1_q;
+  wire [6*DiffW-1:0] q1_q;
+  wire [9*MW-1:0]    m1_q;
+  wire [C1W-1:0]     c1_q;
+  rpu_stage #(.W(6*DiffW + 9*MW + C1W)) u_s1 (
+    .clk_i, .rst_ni, .valid_i(sp_valid),
+    .d_i({q, desc[OffM +: 9*MW], desc[OffTag +: TagW], desc[OffPiece +: 2], az, end_nz, end_lo,
+          desc[OffCos +: KW], desc[OffSin +: KW], desc[OffYMax +: LW], desc[OffYMin +: LW],
+          desc[OffS +: ShW], sp_a, sp_ab, sp_pred1, sp_ovf}),
+    .valid_o(valid1_q), .q_o({q1_q, m1_q, c1_q}));
 
   // =============================================================================================
   // The products q_c · M[r][c] for A (e = 0) and B (e = 1), exact.
@@ -320,97 +260,41 @@ module rpu_surface_setup #(
   wire [18*PmW-1:0] pm;  // product (e, r, c) at index 9e + 3r + c
   wire              m1_valid;
   wire [C1W-1:0]    c2;
-  generate
-    for (e = 0; e < 2; e = e + 1) begin : g_me
-      for (r = 0; r < 3; r = r + 1) begin : g_mr
-        for (k = 0; k < 3; k = k + 1) begin : g_mc
-          wire [DiffW-1:0] qk = q1_q[(3*e+k)*DiffW +: DiffW];
-          wire [MW-1:0]    mk = m1_q[(3*r+k)*MW +: MW];
-          wire             v_m;
-          if (e == 0 && r == 0 && k == 0) begin : g_ctl
-            rpu_mul #(.AW(DiffW), .BW(MW), .Signed(1), .TagW(C1W)) u_m (
-              .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid1_q), .a_i(qk), .b_i(mk),
-              .tag_i(c1_q), .valid_o(v_m), .p_o(pm[(9*e+3*r+k)*PmW +: PmW]), .tag_o(c2));
-            assign m1_valid = v_m;
-          end else begin : g_no_ctl
-            wire t_m;
-            rpu_mul #(.AW(DiffW), .BW(MW), .Signed(1), .TagW(1)) u_m (
-              .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid1_q), .a_i(qk), .b_i(mk),
-              .tag_i(1'b0), .valid_o(v_m), .p_o(pm[(9*e+3*r+k)*PmW +: PmW]), .tag_o(t_m));
-            wire unused_ctl = ^{v_m, t_m};
-          end
-        end
-      end
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(18), .AW(DiffW), .BW(MW), .Signed(1), .TagW(C1W)) u_pm (
+    .clk_i, .rst_ni, .valid_i(valid1_q),
+    .a_i({{3{q1_q[3*DiffW +: 3*DiffW]}}, {3{q1_q[0 +: 3*DiffW]}}}), .b_i({2{m1_q}}),
+    .tag_i(c1_q), .valid_o(m1_valid), .p_o(pm), .tag_o(c2));
 
   // =============================================================================================
-  // Stage 2: the row sums (exact in SumW bits: one carry-save step and one adder).
+  // Stage 2: the row sums (exact in SumW bits, rpu_add3). Stages 3, 4: the arithmetic right
+  // shift by s (fixed::truncate), by 8·s[6:3] then by s[2:0] (a shift of SumW or more leaves the
+  // sign). The context rides beside them.
   // =============================================================================================
-  wire [6*SumW-1:0] rs;  // row (e, r) at index 3e + r
+  wire [6*SumW-1:0] rs, v3, v4;      // row (e, r) at index 3e + r
+  wire [6*SumW-1:0] v2_q, v3_q, v4_q;
+  wire [C1W-1:0]    c2_q, c3_q, c4_q;
+  wire              valid2_q, valid3_q, valid4_q;
+  wire [ShW-1:0]    sh2 = c2_q[C1SO +: ShW];
+  wire [ShW-1:0]    sh3 = c3_q[C1SO +: ShW];
   generate
-    for (e = 0; e < 2; e = e + 1) begin : g_se
-      for (r = 0; r < 3; r = r + 1) begin : g_sr
-        wire [PmW-1:0]  p0 = pm[(9*e+3*r+0)*PmW +: PmW];
-        wire [PmW-1:0]  p1 = pm[(9*e+3*r+1)*PmW +: PmW];
-        wire [PmW-1:0]  p2 = pm[(9*e+3*r+2)*PmW +: PmW];
-        wire [SumW-1:0] x0 = {p0[PmW-1], p0};
-        wire [SumW-1:0] x1 = {p1[PmW-1], p1};
-        wire [SumW-1:0] x2 = {p2[PmW-1], p2};
-        wire [SumW-1:0] cs_s = x0 ^ x1 ^ x2;
-        wire [SumW-2:0] cs_c = (x0[SumW-2:0] & x1[SumW-2:0]) | (x0[SumW-2:0] & x2[SumW-2:0]) |
-                               (x1[SumW-2:0] & x2[SumW-2:0]);
-        assign rs[(3*e+r)*SumW +: SumW] = cs_s + {cs_c, 1'b0};
-      end
+    for (r = 0; r < 6; r = r + 1) begin : g_row
+      wire [3*PmW-1:0]       p  = pm[3*r*PmW +: 3*PmW];
+      wire signed [SumW-1:0] x2 = v2_q[r*SumW +: SumW];
+      wire signed [SumW-1:0] x3 = v3_q[r*SumW +: SumW];
+      rpu_add3 #(.W(SumW)) u_sum (
+        .a_i({p[PmW-1], p[0 +: PmW]}), .b_i({p[2*PmW-1], p[PmW +: PmW]}),
+        .c_i({p[3*PmW-1], p[2*PmW +: PmW]}), .s_o(rs[r*SumW +: SumW]));
+      assign v3[r*SumW +: SumW] = x2 >>> {sh2[ShW-1:3], 3'b000};
+      assign v4[r*SumW +: SumW] = x3 >>> sh3[2:0];
     end
   endgenerate
-
-  reg [6*SumW-1:0] v2_q;
-  reg [C1W-1:0]    c2_q;
-  reg              valid2_q;
-  always @(posedge clk_i) begin
-    v2_q <= rs;
-    c2_q <= c2;
-  end
-
-  // =============================================================================================
-  // Stages 3, 4: the arithmetic right shift by s (fixed::truncate), by 8·s[6:3] then by s[2:0]
-  // (a shift of SumW or more leaves the sign).
-  // =============================================================================================
-  wire [ShW-4:0] sh2 = c2_q[2 + 3*DiffW + 3*CW + 3 +: ShW-3];  // s[6:3]
-  wire [6*SumW-1:0] v3;
-  generate
-    for (k = 0; k < 6; k = k + 1) begin : g_sh3
-      wire signed [SumW-1:0] v = v2_q[k*SumW +: SumW];
-      assign v3[k*SumW +: SumW] = v >>> {sh2, 3'b000};
-    end
-  endgenerate
-
-  reg [6*SumW-1:0] v3_q;
-  reg [C1W-1:0]    c3_q;
-  reg              valid3_q;
-  always @(posedge clk_i) begin
-    v3_q <= v3;
-    c3_q <= c2_q;
-  end
-
-  wire [ShW-1:0] sh3 = c3_q[2 + 3*DiffW + 3*CW +: ShW];
-  wire [6*SumW-1:0] v4;
-  generate
-    for (k = 0; k < 6; k = k + 1) begin : g_sh4
-      wire signed [SumW-1:0] v = v3_q[k*SumW +: SumW];
-      assign v4[k*SumW +: SumW] = v >>> sh3[2:0];
-    end
-  endgenerate
-  wire unused_sh3 = ^sh3[ShW-1:3];
-
-  reg [6*SumW-1:0] v4_q;
-  reg [C1W-1:0]    c4_q;
-  reg              valid4_q;
-  always @(posedge clk_i) begin
-    v4_q <= v4;
-    c4_q <= c3_q;
-  end
+  wire unused_sh = ^{sh2[2:0], sh3[ShW-1:3]};
+  rpu_stage #(.W(6*SumW + C1W)) u_s2 (
+    .clk_i, .rst_ni, .valid_i(m1_valid), .d_i({rs, c2}), .valid_o(valid2_q), .q_o({v2_q, c2_q}));
+  rpu_stage #(.W(6*SumW + C1W)) u_s3 (
+    .clk_i, .rst_ni, .valid_i(valid2_q), .d_i({v3, c2_q}), .valid_o(valid3_q), .q_o({v3_q, c3_q}));
+  rpu_stage #(.W(6*SumW + C1W)) u_s4 (
+    .clk_i, .rst_ni, .valid_i(valid3_q), .d_i({v4, c3_q}), .valid_o(valid4_q), .q_o({v4_q, c4_q}));
 
   // =============================================================================================
   // Stage 5: saturation to LW bits (fixed::saturate), flagged under pred1: la, lb.
@@ -425,26 +309,23 @@ module rpu_surface_setup #(
       assign clamped[k] = ~fit;
     end
   endgenerate
-  wire unused_sh4 = ^c4_q[2 + 3*DiffW + 3*CW +: ShW];  // s is spent
+  wire unused_sh4 = ^c4_q[C1SO +: ShW];  // s is spent
 
   // The context from here to the end-plane products' outputs:
   // {tag, piece, az, end_nz, end_lo, y_max, y_min, A, AB, pred1, ovf}, then {lb, la}.
   localparam integer C5W = TagW + 2 + 3 + 2 * LW + 3 * CW + 3 * DiffW + 2;
   localparam integer C6W = C5W + 6 * LW;
   wire        pred1_4 = c4_q[1];
-  wire [C5W-1:0] c5 = {c4_q[C1W-1 -: TagW + 5], c4_q[2 + 3*DiffW + 3*CW + ShW +: 2*LW],
-                       c4_q[2 +: 3*DiffW + 3*CW], pred1_4, c4_q[0] | (pred1_4 & (|clamped))};
-  wire [2*KW-1:0] cs4 = c4_q[2 + 3*DiffW + 3*CW + ShW + 2*LW +: 2*KW];  // {cos, sin}
-
-  reg [6*LW-1:0]  l5_q;
-  reg [2*KW-1:0]  cs5_q;
-  reg [C5W-1:0]   c5_q;
-  reg             valid5_q;
-  always @(posedge clk_i) begin
-    l5_q  <= lsat;
-    cs5_q <= cs4;
-    c5_q  <= c5;
-  end
+  wire [C5W-1:0] c5 = {c4_q[C1W-1 -: TagW + 5], c4_q[C1SO + ShW +: 2*LW], c4_q[2 +: C1SO - 2],
+                       pred1_4, c4_q[0] | (pred1_4 & (|clamped))};
+  wire [2*KW-1:0] cs4 = c4_q[C1SO + ShW + 2*LW +: 2*KW];  // {cos, sin}
+  wire            valid5_q;
+  wire [6*LW-1:0] l5_q;
+  wire [2*KW-1:0] cs5_q;
+  wire [C5W-1:0]  c5_q;
+  rpu_stage #(.W(6*LW + 2*KW + C5W)) u_s5 (
+    .clk_i, .rst_ni, .valid_i(valid4_q), .d_i({lsat, cs4, c5}), .valid_o(valid5_q),
+    .q_o({l5_q, cs5_q, c5_q}));
 
   // =============================================================================================
   // The end-plane products la.x·cos, la.z·sin, lb.x·cos, lb.z·sin (exact), index 2e + {0, 1}.
@@ -454,28 +335,11 @@ module rpu_surface_setup #(
   wire [4*PeW-1:0] pe;
   wire             m2_valid;
   wire [C6W-1:0]   c6;
-  generate
-    for (e = 0; e < 2; e = e + 1) begin : g_pe
-      for (k = 0; k < 2; k = k + 1) begin : g_pk
-        // k = 0: x·cos; k = 1: z·sin
-        wire [LW-1:0] xk = l5_q[(3*e + 2*k)*LW +: LW];
-        wire [KW-1:0] ck = k == 0 ? cos5 : sin5;
-        wire          v_p;
-        if (e == 0 && k == 0) begin : g_ctl
-          rpu_mul #(.AW(LW), .BW(KW), .Signed(1), .TagW(C6W)) u_p (
-            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid5_q), .a_i(xk), .b_i(ck),
-            .tag_i({c5_q, l5_q}), .valid_o(v_p), .p_o(pe[(2*e+k)*PeW +: PeW]), .tag_o(c6));
-          assign m2_valid = v_p;
-        end else begin : g_no_ctl
-          wire t_p;
-          rpu_mul #(.AW(LW), .BW(KW), .Signed(1), .TagW(1)) u_p (
-            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid5_q), .a_i(xk), .b_i(ck),
-            .tag_i(1'b0), .valid_o(v_p), .p_o(pe[(2*e+k)*PeW +: PeW]), .tag_o(t_p));
-          wire unused_ctl = ^{v_p, t_p};
-        end
-      end
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(4), .AW(LW), .BW(KW), .Signed(1), .TagW(C6W)) u_pe (
+    .clk_i, .rst_ni, .valid_i(valid5_q),
+    .a_i({l5_q[5*LW +: LW], l5_q[3*LW +: LW], l5_q[2*LW +: LW], l5_q[0 +: LW]}),
+    .b_i({sin5, cos5, sin5, cos5}), .tag_i({c5_q, l5_q}), .valid_o(m2_valid), .p_o(pe),
+    .tag_o(c6));
 
   // =============================================================================================
   // Stage E1: f_e = x·cos − z·sin at la and lb; the slab differences; |la.x|, |lb.x|; lb − la.
@@ -487,13 +351,8 @@ module rpu_surface_setup #(
   wire [LW-1:0]   ymin6 = ctx6[2 + 3*DiffW + 3*CW +: LW];
   wire [LW-1:0]   ymax6 = ctx6[2 + 3*DiffW + 3*CW + LW +: LW];
   wire [2*FeW-1:0] fe;
-  generate
-    for (e = 0; e < 2; e = e + 1) begin : g_fe
-      wire signed [PeW-1:0] pc = pe[(2*e+0)*PeW +: PeW];
-      wire signed [PeW-1:0] ps = pe[(2*e+1)*PeW +: PeW];
-      assign fe[e*FeW +: FeW] = {pc[PeW-1], pc} - {ps[PeW-1], ps};
-    end
-  endgenerate
+  rpu_surface_vsub #(.Count(2), .InW(PeW)) u_fe (
+    .a_i({pe[2*PeW +: PeW], pe[0 +: PeW]}), .b_i({pe[3*PeW +: PeW], pe[PeW +: PeW]}), .d_o(fe));
   wire signed [LW:0] ya   = {la6[2*LW-1], la6[LW +: LW]};
   wire signed [LW:0] yb   = {lb6[2*LW-1], lb6[LW +: LW]};
   wire signed [LW:0] ylo  = {ymin6[LW-1], ymin6};
@@ -507,13 +366,7 @@ module rpu_surface_setup #(
   wire [LW-1:0] xa_abs = xa[LW-1] ? -xa : xa;
   wire [LW-1:0] xb_abs = xb[LW-1] ? -xb : xb;
   wire [3*LDiffW-1:0] lab;
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : g_lab
-      wire signed [LDiffW-1:0] ak = {la6[k*LW+LW-1], la6[k*LW +: LW]};
-      wire signed [LDiffW-1:0] bk = {lb6[k*LW+LW-1], lb6[k*LW +: LW]};
-      assign lab[k*LDiffW +: LDiffW] = bk - ak;
-    end
-  endgenerate
+  rpu_surface_vsub #(.Count(3), .InW(LW)) u_lab (.a_i(lb6), .b_i(la6), .d_o(lab));
 
   // The context from here to the dividers' inputs:
   // {tag, piece, az, end_nz, end_lo, A, AB, pred1, ovf}, then {la, lb − la}.
@@ -522,23 +375,16 @@ module rpu_surface_setup #(
   wire [C7W-1:0] c7 = {ctx6[C5W-1 -: TagW + 5], ctx6[0 +: 3*CW + 3*DiffW + 2]};
   wire unused_y6 = ^{ymin6, ymax6, lb6[2*LW +: LW], la6[2*LW +: LW]};
 
-  reg [2*FeW-1:0]      fe7_q;
-  reg [6*(LW+1)-1:0]   slab7_q;
-  reg [LW-1:0]         xa7_q;
-  reg [LW-1:0]         xb7_q;
-  reg                  xan7_q;
-  reg                  xbn7_q;
-  reg [CeW-1:0]        c7_q;
-  reg                  valid7_q;
-  always @(posedge clk_i) begin
-    fe7_q   <= fe;
-    slab7_q <= slab;
-    xa7_q   <= xa_abs;
-    xb7_q   <= xb_abs;
-    xan7_q  <= xa[LW-1];
-    xbn7_q  <= xb[LW-1];
-    c7_q    <= {c7, la6, lab};
-  end
+  wire                valid7_q;
+  wire [2*FeW-1:0]    fe7_q;
+  wire [6*(LW+1)-1:0] slab7_q;
+  wire [LW-1:0]       xa7_q, xb7_q;
+  wire                xan7_q, xbn7_q;
+  wire [CeW-1:0]      c7_q;
+  rpu_stage #(.W(2*FeW + 6*(LW+1) + 2*LW + 2 + CeW)) u_e1 (
+    .clk_i, .rst_ni, .valid_i(m2_valid),
+    .d_i({fe, slab, xa_abs, xb_abs, xa[LW-1], xb[LW-1], c7, la6, lab}),
+    .valid_o(valid7_q), .q_o({fe7_q, slab7_q, xa7_q, xb7_q, xan7_q, xbn7_q, c7_q}));
 
   // =============================================================================================
   // Stage E2: |f_e|; the slab's operands chosen by the sign of dy; |la.x| + |lb.x|.
@@ -565,37 +411,22 @@ module rpu_surface_setup #(
   wire        in_slab = (n_min[LW] | ~(|n_min)) & ~n_max[LW];  // y_min ≤ la.y ≤ y_max
   wire [LW:0] den_x  = {1'b0, xa7_q} + {1'b0, xb7_q};          // ≤ 2^LW
 
-  reg [FaW-1:0] fea8_q;
-  reg [FaW-1:0] feb8_q;
-  reg           fean8_q;
-  reg           febn8_q;
-  reg [LW:0]    dens8_q;
-  reg [LW:0]    numlo8_q;
-  reg [LW:0]    numhi8_q;
-  reg           dyz8_q;
-  reg           ins8_q;
-  reg [LW:0]    denx8_q;
-  reg [LW-1:0]  xa8_q;
-  reg           xan8_q;
-  reg           xbn8_q;
-  reg [CeW-1:0] c8_q;
-  reg           valid8_q;
-  always @(posedge clk_i) begin
-    fea8_q   <= fea_abs;
-    feb8_q   <= feb_abs;
-    fean8_q  <= fea[FeW-1];
-    febn8_q  <= feb[FeW-1];
-    dens8_q  <= den_s;
-    numlo8_q <= num_lo;
-    numhi8_q <= num_hi;
-    dyz8_q   <= dy_zero;
-    ins8_q   <= in_slab;
-    denx8_q  <= den_x;
-    xa8_q    <= xa7_q;
-    xan8_q   <= xan7_q;
-    xbn8_q   <= xbn7_q;
-    c8_q     <= c7_q;
-  end
+  wire          valid8_q;
+  wire [FaW-1:0] fea8_q, feb8_q;
+  wire          fean8_q, febn8_q;
+  wire [LW:0]   dens8_q, numlo8_q, numhi8_q;
+  wire          dyz8_q, ins8_q;
+  wire [LW:0]   denx8_q;
+  wire [LW-1:0] xa8_q;
+  wire          xan8_q, xbn8_q;
+  wire [CeW-1:0] c8_q;
+  rpu_stage #(.W(2*FaW + 2 + 3*(LW+1) + 2 + (LW+1) + LW + 2 + CeW)) u_e2 (
+    .clk_i, .rst_ni, .valid_i(valid7_q),
+    .d_i({fea_abs, feb_abs, fea[FeW-1], feb[FeW-1], den_s, num_lo, num_hi, dy_zero, in_slab,
+          den_x, xa7_q, xan7_q, xbn7_q, c7_q}),
+    .valid_o(valid8_q),
+    .q_o({fea8_q, feb8_q, fean8_q, febn8_q, dens8_q, numlo8_q, numhi8_q, dyz8_q, ins8_q, denx8_q,
+          xa8_q, xan8_q, xbn8_q, c8_q}));
 
   // =============================================================================================
   // Stage E3: the divider operands by type; |feA| + |feB|; the slab's clamp tests
@@ -624,84 +455,29 @@ module rpu_surface_setup #(
   // The context through the dividers: {tag, piece, az, end_nz, end_lo, has_x, has_e, x_a < 0,
   // x_b < 0, f_eA < 0, f_eB < 0, z_lo, o_lo, z_hi, o_hi, A, AB, pred1, ovf, la, lab}.
   localparam integer CdW = CeW + 10;
-  reg [Den1W-1:0] num1_9_q;
-  reg [Den1W-1:0] den1_9_q;
-  reg [Den2W-1:0] num2_9_q;
-  reg [Den2W-1:0] den2_9_q;
-  reg [CdW-1:0]   c9_q;
-  reg             valid9_q;
-  always @(posedge clk_i) begin
-    num1_9_q <= num1;
-    den1_9_q <= den1;
-    num2_9_q <= num2;
-    den2_9_q <= den2;
-    c9_q     <= {c8_q[CeW-1 -: TagW + 5], has_x, has_e, xan8_q, xbn8_q, fean8_q, febn8_q,
-                 z_lo, o_lo, z_hi, o_hi, c8_q[0 +: CeW - TagW - 5]};
-  end
-
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      valid1_q <= 1'b0;
-      valid2_q <= 1'b0;
-      valid3_q <= 1'b0;
-      valid4_q <= 1'b0;
-      valid5_q <= 1'b0;
-      valid7_q <= 1'b0;
-      valid8_q <= 1'b0;
-      valid9_q <= 1'b0;
-    end else begin
-      valid1_q <= sp_valid;
-      valid2_q <= m1_valid;
-      valid3_q <= valid2_q;
-      valid4_q <= valid3_q;
-      valid5_q <= valid4_q;
-      valid7_q <= m2_valid;
-      valid8_q <= valid7_q;
-      valid9_q <= valid8_q;
-    end
-  end
+  wire             valid9_q;
+  wire [Den1W-1:0] num1_9_q, den1_9_q;
+  wire [Den2W-1:0] num2_9_q, den2_9_q;
+  wire [CdW-1:0]   c9_q;
+  rpu_stage #(.W(2*Den1W + 2*Den2W + CdW)) u_e3 (
+    .clk_i, .rst_ni, .valid_i(valid8_q),
+    .d_i({num1, den1, num2, den2, c8_q[CeW-1 -: TagW + 5], has_x, has_e, xan8_q, xbn8_q, fean8_q,
+          febn8_q, z_lo, o_lo, z_hi, o_hi, c8_q[0 +: CeW - TagW - 5]}),
+    .valid_o(valid9_q), .q_o({num1_9_q, den1_9_q, num2_9_q, den2_9_q, c9_q}));
 
   // =============================================================================================
   // The dividers: 1 takes the slab's lo or the x = 0 cut, 2 the slab's hi or the end-plane cut.
   // =============================================================================================
-  wire          d1_valid;
-  wire [SW-1:0] q1;
+  wire           d1_valid, d2_valid;
+  wire [SW-1:0]  q1, q2;
   wire [CdW-1:0] cd;
-  rpu_div #(
-    .NumW (Den1W + SF),
-    .DenW (Den1W),
-    .QuotW(SW),
-    .TagW (CdW)
-  ) u_div1 (
-    .clk_i  (clk_i),
-    .rst_ni (rst_ni),
-    .valid_i(valid9_q),
-    .num_i  ({num1_9_q, {SF{1'b0}}}),
-    .den_i  (den1_9_q),
-    .tag_i  (c9_q),
-    .valid_o(d1_valid),
-    .quot_o (q1),
-    .tag_o  (cd)
-  );
-  wire          d2_valid;
-  wire [SW-1:0] q2;
-  wire          d2_tag;
-  rpu_div #(
-    .NumW (Den2W + SF),
-    .DenW (Den2W),
-    .QuotW(SW),
-    .TagW (1)
-  ) u_div2 (
-    .clk_i  (clk_i),
-    .rst_ni (rst_ni),
-    .valid_i(valid9_q),
-    .num_i  ({num2_9_q, {SF{1'b0}}}),
-    .den_i  (den2_9_q),
-    .tag_i  (1'b0),
-    .valid_o(d2_valid),
-    .quot_o (q2),
-    .tag_o  (d2_tag)
-  );
+  wire           d2_tag;
+  rpu_div #(.NumW(Den1W + SF), .DenW(Den1W), .QuotW(SW), .TagW(CdW)) u_div1 (
+    .clk_i, .rst_ni, .valid_i(valid9_q), .num_i({num1_9_q, {SF{1'b0}}}), .den_i(den1_9_q),
+    .tag_i(c9_q), .valid_o(d1_valid), .quot_o(q1), .tag_o(cd));
+  rpu_div #(.NumW(Den2W + SF), .DenW(Den2W), .QuotW(SW), .TagW(1)) u_div2 (
+    .clk_i, .rst_ni, .valid_i(valid9_q), .num_i({num2_9_q, {SF{1'b0}}}), .den_i(den2_9_q),
+    .tag_i(1'b0), .valid_o(d2_valid), .quot_o(q2), .tag_o(d2_tag));
   wire unused_d2 = ^{d2_valid, d2_tag};  // the same pipeline as u_div1
 
   // =============================================================================================
@@ -720,27 +496,16 @@ module rpu_surface_setup #(
   wire [SW-1:0] v1 = azd | ~(zlod | olod) ? q1 : zlod ? {SW{1'b0}} : One;
   wire [SW-1:0] v2 = azd | ~(zhid | ohid) ? q2 : zhid ? {SW{1'b0}} : One;
 
-  reg [SW-1:0]  v1_10_q;
-  reg [SW-1:0]  v2_10_q;
-  reg           lt10_q;
-  reg           eq10_q;
-  reg           z1_10_q;
-  reg           z2_10_q;
-  reg           o1_10_q;
-  reg           o2_10_q;
-  reg [CdW-5:0] c10_q;  // the flags z_lo .. o_hi are spent
-  reg           valid10_q;
-  always @(posedge clk_i) begin
-    v1_10_q <= v1;
-    v2_10_q <= v2;
-    lt10_q  <= v1 < v2;
-    eq10_q  <= v1 == v2;
-    z1_10_q <= ~(|v1);
-    z2_10_q <= ~(|v2);
-    o1_10_q <= v1 == One;
-    o2_10_q <= v2 == One;
-    c10_q   <= {cd[CdW-1 -: TagW + 11], cd[0 +: CxW]};
-  end
+  wire          valid10_q;
+  wire [SW-1:0] v1_10_q, v2_10_q;
+  wire          lt10_q, eq10_q, z1_10_q, z2_10_q, o1_10_q, o2_10_q;
+  wire [CdW-5:0] c10_q;  // the flags z_lo .. o_hi are spent
+  rpu_stage #(.W(2*SW + 6 + CdW - 4)) u_d1 (
+    .clk_i, .rst_ni, .valid_i(d1_valid),
+    .d_i({v1, v2, v1 < v2, v1 == v2, ~(|v1), ~(|v2), v1 == One, v2 == One,
+          cd[CdW-1 -: TagW + 11], cd[0 +: CxW]}),
+    .valid_o(valid10_q),
+    .q_o({v1_10_q, v2_10_q, lt10_q, eq10_q, z1_10_q, z2_10_q, o1_10_q, o2_10_q, c10_q}));
 
   // =============================================================================================
   // Stage D2: the pieces. Four bounds b0 ≤ b1 ≤ b2 ≤ b3 with empty intervals where the twin has
@@ -775,18 +540,12 @@ module rpu_surface_setup #(
       b2 = lt10_q ? v2_10_q : v1_10_q;
       b3 = One;
       ne = {lt10_q ? ~o2_10_q : ~o1_10_q, ~eq10_q, lt10_q ? ~z1_10_q : ~z2_10_q};
-    end else if (hx10) begin
+    end else if (hx10 || he10) begin  // one cut: the x = 0 cut, else the end-plane cut
       b0 = {SW{1'b0}};
-      b1 = v1_10_q;
+      b1 = hx10 ? v1_10_q : v2_10_q;
       b2 = One;
       b3 = One;
-      ne = {1'b0, ~o1_10_q, ~z1_10_q};
-    end else if (he10) begin
-      b0 = {SW{1'b0}};
-      b1 = v2_10_q;
-      b2 = One;
-      b3 = One;
-      ne = {1'b0, ~o2_10_q, ~z2_10_q};
+      ne = {1'b0, hx10 ? ~o1_10_q : ~o2_10_q, hx10 ? ~z1_10_q : ~z2_10_q};
     end else begin
       b0 = {SW{1'b0}};
       b1 = One;
@@ -814,26 +573,21 @@ module rpu_surface_setup #(
   wire [3*LW-1:0]    la10  = c10_q[3*LDiffW +: 3*LW];
   wire [3*LDiffW-1:0] lab10 = c10_q[0 +: 3*LDiffW];
 
-  reg [SW-1:0]        slo11_q;
-  reg [SW-1:0]        shi11_q;
-  reg [3*DiffW-1:0]   ab11_q;
-  reg [3*LDiffW-1:0]  lab11_q;
-  reg [CpW-1:0]       c11_q;
-  reg [8:0]           br11_q;
-  reg [SW-1:0]        cx11_q;
-  reg [SW-1:0]        ce11_q;
-  reg                 valid11_q;
-  always @(posedge clk_i) begin
-    slo11_q <= s_lo;
-    shi11_q <= s_hi;
-    ab11_q  <= ab10;
-    lab11_q <= lab10;
-    c11_q   <= {c10_q[CdW-5 -: TagW], pred10, pred10 & (sel0 | sel1 | sel2), pred10 ? count : 2'd0,
-                s_lo, s_hi, a10, ovf10, la10};
-    br11_q  <= c10_q[CxW +: 9];  // {az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn}
-    cx11_q  <= v1_10_q;
-    ce11_q  <= v2_10_q;
-  end
+  wire                valid11_q;
+  wire [SW-1:0]       slo11_q, shi11_q;
+  wire [3*DiffW-1:0]  ab11_q;
+  wire [3*LDiffW-1:0] lab11_q;
+  wire [CpW-1:0]      c11_q;
+  wire [8:0]          br11_q;
+  wire [SW-1:0]       cx11_q, ce11_q;
+  // br: {az, end_nz, end_lo, has_x, has_e, xan, xbn, fean, febn}; cx, ce: the cuts.
+  rpu_stage #(.W(2*SW + 3*DiffW + 3*LDiffW + CpW + 9 + 2*SW)) u_d2 (
+    .clk_i, .rst_ni, .valid_i(valid10_q),
+    .d_i({s_lo, s_hi, ab10, lab10, c10_q[CdW-5 -: TagW], pred10, pred10 & (sel0 | sel1 | sel2),
+          pred10 ? count : 2'd0, s_lo, s_hi, a10, ovf10, la10, c10_q[CxW +: 9], v1_10_q,
+          v2_10_q}),
+    .valid_o(valid11_q),
+    .q_o({slo11_q, shi11_q, ab11_q, lab11_q, c11_q, br11_q, cx11_q, ce11_q}));
 
   // =============================================================================================
   // Stage D3 (beside the piece products): the piece's azimuth branch. A piece ending at or before
@@ -864,30 +618,16 @@ module rpu_surface_setup #(
   wire [6*PlW-1:0] pl;
   wire             m3_valid;
   wire [CpW-1:0]   c12;
-  generate
-    for (e = 0; e < 2; e = e + 1) begin : g_pf
-      wire [SW:0] sk = {1'b0, e == 0 ? slo11_q : shi11_q};
-      for (k = 0; k < 3; k = k + 1) begin : g_pk3
-        wire v_w, v_l, t_l;
-        if (e == 0 && k == 0) begin : g_ctl
-          rpu_mul #(.AW(DiffW), .BW(SW + 1), .Signed(1), .TagW(CpW), .Latency(L3)) u_w (
-            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid11_q), .a_i(ab11_q[k*DiffW +: DiffW]),
-            .b_i(sk), .tag_i(c11_q), .valid_o(v_w), .p_o(ps[(3*e+k)*PsW +: PsW]), .tag_o(c12));
-          assign m3_valid = v_w;
-        end else begin : g_no_ctl
-          wire t_w;
-          rpu_mul #(.AW(DiffW), .BW(SW + 1), .Signed(1), .TagW(1), .Latency(L3)) u_w (
-            .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid11_q), .a_i(ab11_q[k*DiffW +: DiffW]),
-            .b_i(sk), .tag_i(1'b0), .valid_o(v_w), .p_o(ps[(3*e+k)*PsW +: PsW]), .tag_o(t_w));
-          wire unused_ctl = ^{v_w, t_w};
-        end
-        rpu_mul #(.AW(LDiffW), .BW(SW + 1), .Signed(1), .TagW(1), .Latency(L3)) u_l (
-          .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid11_q), .a_i(lab11_q[k*LDiffW +: LDiffW]),
-          .b_i(sk), .tag_i(1'b0), .valid_o(v_l), .p_o(pl[(3*e+k)*PlW +: PlW]), .tag_o(t_l));
-        wire unused_l = ^{v_l, t_l};
-      end
-    end
-  endgenerate
+  wire             m3l_valid, m3l_tag;
+  wire [SW:0]      slo_s = {1'b0, slo11_q};  // s as a non-negative signed operand
+  wire [SW:0]      shi_s = {1'b0, shi11_q};
+  rpu_mul_vec #(.Count(6), .AW(DiffW), .BW(SW + 1), .Signed(1), .TagW(CpW), .Latency(L3)) u_ps (
+    .clk_i, .rst_ni, .valid_i(valid11_q), .a_i({2{ab11_q}}), .b_i({{3{shi_s}}, {3{slo_s}}}),
+    .tag_i(c11_q), .valid_o(m3_valid), .p_o(ps), .tag_o(c12));
+  rpu_mul_vec #(.Count(6), .AW(LDiffW), .BW(SW + 1), .Signed(1), .TagW(1), .Latency(L3)) u_pl (
+    .clk_i, .rst_ni, .valid_i(valid11_q), .a_i({2{lab11_q}}), .b_i({{3{shi_s}}, {3{slo_s}}}),
+    .tag_i(1'b0), .valid_o(m3l_valid), .p_o(pl), .tag_o(m3l_tag));
+  wire unused_pl = ^{m3l_valid, m3l_tag};  // the same pipeline as u_ps
 
   // =============================================================================================
   // Stage P1: A' = A + floor((B − A)·s_lo·2^-SF), B' likewise at s_hi; lA', lB' on la → lb.
@@ -921,62 +661,31 @@ module rpu_surface_setup #(
   // c14, LSB first: last_turn, x_negative, ovf, s_hi, s_lo, pieces, piece_valid, pred1, tag.
   localparam integer C14PiecesO = 3 + 2 * SW;
   localparam integer C14TagO    = C14PiecesO + 4;
-  reg [6*CW-1:0] wend13_q;
-  reg [6*LW-1:0] lend13_q;
-  reg [CoW-1:0]  c13_q;
-  reg            valid13_q;
-  always @(posedge clk_i) begin
-    wend13_q <= wend;
-    lend13_q <= lend;
-    c13_q    <= {c12[CpW-1 -: TagW + 4 + 2*SW], c12[3*LW], br_out};
-  end
+  wire [6*CW-1:0] wend13_q;
+  wire [6*LW-1:0] lend13_q;
+  wire [CoW-1:0]  c13_q;
+  wire            valid13_q;
+  rpu_stage #(.W(6*CW + 6*LW + CoW)) u_p1 (
+    .clk_i, .rst_ni, .valid_i(m3_valid),
+    .d_i({wend, lend, c12[CpW-1 -: TagW + 4 + 2*SW], c12[3*LW], br_out}),
+    .valid_o(valid13_q), .q_o({wend13_q, lend13_q, c13_q}));
 
   // =============================================================================================
   // Stage P2: B' − A', lB' − lA' (exact); the outputs registered.
   // =============================================================================================
   wire [3*DiffW-1:0]  wd;
   wire [3*LDiffW-1:0] ld;
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : g_d
-      wire signed [CW-1:0] a0 = wend13_q[k*CW +: CW];
-      wire signed [CW-1:0] a1 = wend13_q[(3+k)*CW +: CW];
-      wire signed [LW-1:0] l0 = lend13_q[k*LW +: LW];
-      wire signed [LW-1:0] l1 = lend13_q[(3+k)*LW +: LW];
-      assign wd[k*DiffW +: DiffW]   = {a1[CW-1], a1} - {a0[CW-1], a0};
-      assign ld[k*LDiffW +: LDiffW] = {l1[LW-1], l1} - {l0[LW-1], l0};
-    end
-  endgenerate
-
-  reg [3*CW-1:0]     a14_q;
-  reg [3*DiffW-1:0]  ab14_q;
-  reg [3*LW-1:0]     la14_q;
-  reg [3*LDiffW-1:0] lab14_q;
-  reg [CoW-1:0]      c14_q;
-  reg                valid14_q;
-  always @(posedge clk_i) begin
-    a14_q   <= wend13_q[0 +: 3*CW];
-    ab14_q  <= wd;
-    la14_q  <= lend13_q[0 +: 3*LW];
-    lab14_q <= ld;
-    c14_q   <= c13_q;
-  end
-
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      valid10_q <= 1'b0;
-      valid11_q <= 1'b0;
-      valid13_q <= 1'b0;
-      valid14_q <= 1'b0;
-    end else begin
-      valid10_q <= d1_valid;
-      valid11_q <= valid10_q;
-      valid13_q <= m3_valid;
-      valid14_q <= valid13_q;
-    end
-  end
+  rpu_surface_vsub #(.Count(3), .InW(CW)) u_wd (
+    .a_i(wend13_q[3*CW +: 3*CW]), .b_i(wend13_q[0 +: 3*CW]), .d_o(wd));
+  rpu_surface_vsub #(.Count(3), .InW(LW)) u_ld (
+    .a_i(lend13_q[3*LW +: 3*LW]), .b_i(lend13_q[0 +: 3*LW]), .d_o(ld));
 
   // c14 = {tag, pred1, piece_valid, pieces, s_lo, s_hi, ovf, x_negative, last_turn}
-  assign valid_o       = valid14_q;
+  wire [CoW-1:0] c14_q;
+  rpu_stage #(.W(3*CW + 3*DiffW + 3*LW + 3*LDiffW + CoW)) u_p2 (
+    .clk_i, .rst_ni, .valid_i(valid13_q),
+    .d_i({wend13_q[0 +: 3*CW], wd, lend13_q[0 +: 3*LW], ld, c13_q}),
+    .valid_o, .q_o({a_o, ab_o, la_o, lab_o, c14_q}));
   assign tag_o         = c14_q[C14TagO +: TagW];
   assign pred1_o       = c14_q[C14TagO - 1];
   assign piece_valid_o = c14_q[C14PiecesO + 2];
@@ -986,10 +695,6 @@ module rpu_surface_setup #(
   assign ovf_o         = c14_q[2];
   assign x_negative_o  = c14_q[1];
   assign last_turn_o   = c14_q[0];
-  assign a_o           = a14_q;
-  assign ab_o          = ab14_q;
-  assign la_o          = la14_q;
-  assign lab_o         = lab14_q;
 endmodule
 
 `default_nettype wire

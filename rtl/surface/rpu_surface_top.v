@@ -47,11 +47,7 @@ module rpu_surface_top #(
   parameter integer InvW     = 18,  // the sphere unit's 1/L² mantissa width (8..40)
   parameter integer SqrtW    = 0,   // widest radicand of the sphere unit's root; 0 = exact
   parameter integer EdgeFrac = 16,  // FE: fraction bits of the camera axis W (8..40)
-  parameter integer SurfW    = 24,  // LW: signed width of surface-local coordinates (16..36)
-  parameter integer AngleW   = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
-  parameter integer Turns    = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
-  parameter integer N        = 16,  // result bits of τ (1..40)
-  parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
+`include "rpu_surface_ip_params.vh"
   parameter integer Unrolled = 0,   // 1: K + 1 pass units, 0: one pass unit used K + 1 times
   parameter integer TagW     = 1,   // side-band bits carried with each item (>= 1)
   // Derived (do not override).
@@ -75,45 +71,20 @@ module rpu_surface_top #(
   // SurfaceDesc: the setup's fields.
   input  wire [3*CoordW-1:0] bound_c0_i,     // bounding-sphere centre, LSB
   input  wire [BR2W-1:0]     bound_r2_i,     // bounding-sphere radius², LSB², unsigned
-  input  wire [3*CoordW-1:0] origin_i,       // LSB
-  input  wire [9*MantW-1:0]  to_local_i,     // M, row-major, signed entries
-  input  wire [6:0]          to_local_s_i,   // unsigned
-  input  wire [2:0]          type_i,         // scene::SurfaceType
-  input  wire [SurfW-1:0]    y_min_i,        // llsb
-  input  wire [SurfW-1:0]    y_max_i,        // llsb
-  input  wire [AngleW-1:0]   end_angle_i,    // binary angle
-  input  wire [ConstW-1:0]   end_cos_i,      // Q(1.KF)
-  input  wire [ConstW-1:0]   end_sin_i,      // Q(1.KF)
+`include "rpu_surface_setup_ports.vh"
   // SurfaceDesc: the indicator's fields (rpu_indicator's ports).
-  input  wire [3:0]          full_turns_i,
-  input  wire [SurfW:0]      sx_i,
-  input  wire [SurfW:0]      sy_i,
-  input  wire [SurfW:0]      sz_i,
-  input  wire [R2W-1:0]      r2_i,
-  input  wire [ConstW-1:0]   kd_i,
-  input  wire [ConstW-1:0]   ke2_i,
-  input  wire [MantW-1:0]    y_angle_m_i,
-  input  wire [7:0]          y_angle_s_i,
-  input  wire [SurfW-1:0]    rho0_i,
-  input  wire [TurnW-1:0]    a_turn_i,
-  input  wire [TurnW-1:0]    k_turn_i,
-  input  wire [SurfW-1:0]    rocket_a_i,
-  input  wire [SurfW-1:0]    rocket_b_i,
-  input  wire [MantW-1:0]    fin_m_i,
-  input  wire [7:0]          fin_s_i,
-  input  wire [MantW-1:0]    cone_m_i,
-  input  wire [7:0]          cone_s_i,
+`include "rpu_surface_ind_ports.vh"
   input  wire [1:0]          piece_i,        // 0..2
   input  wire [TagW-1:0]     tag_i,
-  output reg                 valid_o,
-  output reg                 piece_valid_o,
-  output reg                 hit_o,
-  output reg                 ovf_o,
-  output reg  [1:0]          pieces_o,
-  output reg  [N-1:0]        tau_o,
-  output reg  [3*CoordW-1:0] x_o,            // X, LSB
-  output reg  [DepthW-1:0]   depth_o,        // (X − h)·W, Q(.FE+14) in LSB
-  output reg  [TagW-1:0]     tag_o
+  output wire                valid_o,
+  output wire                piece_valid_o,
+  output wire                hit_o,
+  output wire                ovf_o,
+  output wire [1:0]          pieces_o,
+  output wire [N-1:0]        tau_o,
+  output wire [3*CoordW-1:0] x_o,            // X, LSB
+  output wire [DepthW-1:0]   depth_o,        // (X − h)·W, Q(.FE+14) in LSB
+  output wire [TagW-1:0]     tag_o
 );
 `include "rpu_mul_latency.vh"
 `include "rpu_surface_latency.vh"
@@ -231,48 +202,23 @@ module rpu_surface_top #(
   wire [3*CW-1:0]    ip_a  = ip_ctx[CAO +: 3*CW];
   wire [3*DiffW-1:0] ip_ab = ip_ctx[CAbO +: 3*DiffW];
   wire [3*DiffW-1:0] amh;                      // A' − h, exact
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_amh
-      wire [CW-1:0] ac = ip_a[c*CW +: CW];
-      wire [CW-1:0] hc = eye_i[c*CW +: CW];
-      assign amh[c*DiffW +: DiffW] = {ac[CW-1], ac} - {hc[CW-1], hc};
-    end
-  endgenerate
+  rpu_surface_vsub #(.Count(3), .InW(CW)) u_amh (.a_i(ip_a), .b_i(eye_i), .d_o(amh));
   // The first product's tag: {tag, hit, ovf, pieces, piece valid, τ, A', A' − h}.
   localparam integer XtW = TagW + 1 + 1 + 2 + 1 + N + 3 * CW + 3 * DiffW;
   wire [3*XPW-1:0] xp;
   wire             xp_valid;
   wire [XtW-1:0]   xp_tag;
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_xmul
-      if (c == 0) begin : g_carry
-        rpu_mul #(.AW(DiffW), .BW(N + 1), .Signed(1), .TagW(XtW)) u_mul (
-          .clk_i, .rst_ni, .valid_i(ip_valid), .a_i(ip_ab[c*DiffW +: DiffW]), .b_i({1'b0, ip_tau}),
-          .tag_i({ip_ctx[CTagO +: TagW], ip_hit, ip_ovf | ip_ctx[COvfO], ip_ctx[CPiecesO +: 2],
-                  ip_ctx[CValidO], ip_tau, ip_a, amh}),
-          .valid_o(xp_valid), .p_o(xp[c*XPW +: XPW]), .tag_o(xp_tag));
-      end else begin : g_plain
-        wire v_unused, t_unused;
-        rpu_mul #(.AW(DiffW), .BW(N + 1), .Signed(1), .TagW(1)) u_mul (
-          .clk_i, .rst_ni, .valid_i(ip_valid), .a_i(ip_ab[c*DiffW +: DiffW]), .b_i({1'b0, ip_tau}),
-          .tag_i(1'b0), .valid_o(v_unused), .p_o(xp[c*XPW +: XPW]), .tag_o(t_unused));
-        wire unused_plain = ^{v_unused, t_unused};
-      end
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(3), .AW(DiffW), .BW(N + 1), .Signed(1), .ShareB(1), .TagW(XtW)) u_xmul (
+    .clk_i, .rst_ni, .valid_i(ip_valid), .a_i(ip_ab), .b_i({1'b0, ip_tau}),
+    .tag_i({ip_ctx[CTagO +: TagW], ip_hit, ip_ovf | ip_ctx[COvfO], ip_ctx[CPiecesO +: 2],
+            ip_ctx[CValidO], ip_tau, ip_a, amh}),
+    .valid_o(xp_valid), .p_o(xp), .tag_o(xp_tag));
 
   localparam integer XsW = TagW + 5 + N;       // {tag, hit, ovf, pieces, piece valid, τ}
-  reg              xs_valid_q;
-  reg [XsW-1:0]    xs_q;
-  reg [3*CW-1:0]   x_q;
-  reg [3*DiffW-1:0] q_q;                       // X − h
   wire [3*CW-1:0]    xt_a   = xp_tag[3*DiffW +: 3*CW];
   wire [3*DiffW-1:0] xt_amh = xp_tag[0 +: 3*DiffW];
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) xs_valid_q <= 1'b0;
-    else         xs_valid_q <= xp_valid;
-  end
-  always @(posedge clk_i) xs_q <= xp_tag[XtW-1 -: XsW];
+  wire [3*CW-1:0]    x;
+  wire [3*DiffW-1:0] q;                        // X − h
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_x
       wire [XPW-1:0]   p  = xp[c*XPW +: XPW];
@@ -281,48 +227,35 @@ module rpu_surface_top #(
       wire [DiffW-1:0] mc = xt_amh[c*DiffW +: DiffW];
       wire [XFW-1:0]   xs = {ac[CW-1], ac[CW-1], ac} + f;      // exact in CW bits (A' .. B')
       wire [XFW-1:0]   qs = {mc[DiffW-1], mc} + f;            // exact in CW + 1 bits (X − h)
-      always @(posedge clk_i) begin
-        x_q[c*CW +: CW]       <= xs[CW-1:0];
-        q_q[c*DiffW +: DiffW] <= qs[DiffW-1:0];
-      end
+      assign x[c*CW +: CW]       = xs[CW-1:0];
+      assign q[c*DiffW +: DiffW] = qs[DiffW-1:0];
       wire unused_x = ^{p[N-1:0], xs[XFW-1:CW], qs[XFW-1:DiffW]};
     end
   endgenerate
+  wire               xs_valid_q;
+  wire [XsW-1:0]     xs_q;
+  wire [3*CW-1:0]    x_q;
+  wire [3*DiffW-1:0] q_q;
+  rpu_stage #(.W(XsW + 3*CW + 3*DiffW)) u_xs (
+    .clk_i, .rst_ni, .valid_i(xp_valid), .d_i({xp_tag[XtW-1 -: XsW], x, q}),
+    .valid_o(xs_valid_q), .q_o({xs_q, x_q, q_q}));
 
   // ---- depth = (X − h)·W ----
   localparam integer DtW = XsW + 3 * CW;       // {tag, hit, ovf, pieces, piece valid, τ, X}
   wire [3*DPW-1:0] dp;
   wire             dp_valid;
   wire [DtW-1:0]   dp_tag;
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_dmul
-      if (c == 0) begin : g_carry
-        rpu_mul #(.AW(DiffW), .BW(EdgeW), .Signed(1), .TagW(DtW)) u_mul (
-          .clk_i, .rst_ni, .valid_i(xs_valid_q), .a_i(q_q[c*DiffW +: DiffW]),
-          .b_i(w_i[c*EdgeW +: EdgeW]), .tag_i({xs_q, x_q}),
-          .valid_o(dp_valid), .p_o(dp[c*DPW +: DPW]), .tag_o(dp_tag));
-      end else begin : g_plain
-        wire v_unused, t_unused;
-        rpu_mul #(.AW(DiffW), .BW(EdgeW), .Signed(1), .TagW(1)) u_mul (
-          .clk_i, .rst_ni, .valid_i(xs_valid_q), .a_i(q_q[c*DiffW +: DiffW]),
-          .b_i(w_i[c*EdgeW +: EdgeW]), .tag_i(1'b0),
-          .valid_o(v_unused), .p_o(dp[c*DPW +: DPW]), .tag_o(t_unused));
-        wire unused_plain = ^{v_unused, t_unused};
-      end
-    end
-  endgenerate
-  // A sum of three as one carry-save step and one adder (a + b + c = (a ^ b ^ c) + 2·maj),
-  // exact modulo 2^DSW (the sum fits DSW bits).
+  rpu_mul_vec #(.Count(3), .AW(DiffW), .BW(EdgeW), .Signed(1), .TagW(DtW)) u_dmul (
+    .clk_i, .rst_ni, .valid_i(xs_valid_q), .a_i(q_q), .b_i(w_i), .tag_i({xs_q, x_q}),
+    .valid_o(dp_valid), .p_o(dp), .tag_o(dp_tag));
+  // A sum of three in one carry chain (rpu_add3), exact modulo 2^DSW (the sum fits DSW bits).
   wire [DPW-1:0] d0 = dp[0*DPW +: DPW];
   wire [DPW-1:0] d1 = dp[1*DPW +: DPW];
   wire [DPW-1:0] d2 = dp[2*DPW +: DPW];
-  wire [DSW-1:0] e0 = {{2{d0[DPW-1]}}, d0};
-  wire [DSW-1:0] e1 = {{2{d1[DPW-1]}}, d1};
-  wire [DSW-1:0] e2 = {{2{d2[DPW-1]}}, d2};
-  wire [DSW-1:0] cs_s = e0 ^ e1 ^ e2;
-  wire [DSW-2:0] cs_c = (e0[DSW-2:0] & e1[DSW-2:0]) | (e0[DSW-2:0] & e2[DSW-2:0]) |
-                        (e1[DSW-2:0] & e2[DSW-2:0]);
-  wire [DSW-1:0] depth = cs_s + {cs_c, 1'b0};
+  wire [DSW-1:0] depth;
+  rpu_add3 #(.W(DSW)) u_depth (
+    .a_i({{2{d0[DPW-1]}}, d0}), .b_i({{2{d1[DPW-1]}}, d1}), .c_i({{2{d2[DPW-1]}}, d2}),
+    .s_o(depth));
 
   // ---- outputs (τ, X and depth zero without a hit, as the twin's) ----
   wire [3*CW-1:0] o_x     = dp_tag[3*CW-1:0];
@@ -332,20 +265,12 @@ module rpu_surface_top #(
   wire            o_ovf   = dp_tag[3*CW + N + 3];
   wire            o_hit   = dp_tag[3*CW + N + 4];
   wire [TagW-1:0] o_tag   = dp_tag[DtW-1 -: TagW];
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= dp_valid;
-  end
-  always @(posedge clk_i) begin
-    piece_valid_o <= o_pv;
-    hit_o         <= o_hit;
-    ovf_o         <= o_ovf;
-    pieces_o      <= o_pcs;
-    tau_o         <= o_hit ? o_tau : {N{1'b0}};
-    x_o           <= o_hit ? o_x : {(3*CW){1'b0}};
-    depth_o       <= o_hit ? {{(DepthW-DSW){depth[DSW-1]}}, depth} : {DepthW{1'b0}};
-    tag_o         <= o_tag;
-  end
+  wire [DepthW-1:0] o_depth = o_hit ? {{(DepthW-DSW){depth[DSW-1]}}, depth} : {DepthW{1'b0}};
+  rpu_stage #(.W(5 + N + 3*CW + DepthW + TagW)) u_out (
+    .clk_i, .rst_ni, .valid_i(dp_valid),
+    .d_i({o_pv, o_hit, o_ovf, o_pcs, o_hit ? o_tau : {N{1'b0}}, o_hit ? o_x : {(3*CW){1'b0}},
+          o_depth, o_tag}),
+    .valid_o, .q_o({piece_valid_o, hit_o, ovf_o, pieces_o, tau_o, x_o, depth_o, tag_o}));
 endmodule
 
 `default_nettype wire

@@ -43,11 +43,11 @@ module rpu_ray_plane #(
   input  wire [3*DirW-1:0]   vhat_i,      // v̂, {z, y, x}, Q(2.FV), signed each
   input  wire [3*EdgeW-1:0]  w_i,         // camera axis W, {z, y, x}, Q(4.FE+14), signed each
   input  wire [TagW-1:0]     tag_i,
-  output reg                 valid_o,
-  output reg                 p0_valid_o,  // the ray meets z = 0 in front of the eye, in range
-  output reg  [3*CoordW-1:0] p0_o,        // {z = 0, y, x}, LSB, signed each (0 when not valid)
-  output reg  [DepthW-1:0]   depth_o,     // (p0 − h)·W, signed (0 when not valid)
-  output reg  [TagW-1:0]     tag_o
+  output wire                valid_o,
+  output wire                p0_valid_o,  // the ray meets z = 0 in front of the eye, in range
+  output wire [3*CoordW-1:0] p0_o,        // {z = 0, y, x}, LSB, signed each (0 when not valid)
+  output wire [DepthW-1:0]   depth_o,     // (p0 − h)·W, signed (0 when not valid)
+  output wire [TagW-1:0]     tag_o
 );
   localparam integer CW    = CoordW;
   localparam integer FV    = DirFrac;
@@ -94,19 +94,15 @@ module rpu_ray_plane #(
   // Side band from here to the divider's output: {tag, ok, −h_z, W, v̂_y, v̂_x, h_y, h_x}.
   wire [SbDataW-1:0]    sb_data = {nhz, w_i, vhat_i[0 +: 2*DirW], eye_i[0 +: 2*CW]};
 
-  reg              s0_valid_q;
-  reg [CW-1:0]     s0_hz_abs_q;
-  reg [DirW-1:0]   s0_vz_abs_q;
-  reg              s0_sign_ok_q;
-  reg [SbDataW-1:0] s0_sb_q;
-  reg [TagW-1:0]   s0_tag_q;
-  always @(posedge clk_i) begin
-    s0_hz_abs_q  <= hz_abs;
-    s0_vz_abs_q  <= vz_abs;
-    s0_sign_ok_q <= sign_ok;
-    s0_sb_q      <= sb_data;
-    s0_tag_q     <= tag_i;
-  end
+  wire              s0_valid_q;
+  wire [CW-1:0]     s0_hz_abs_q;
+  wire [DirW-1:0]   s0_vz_abs_q;
+  wire              s0_sign_ok_q;
+  wire [SbDataW-1:0] s0_sb_q;
+  wire [TagW-1:0]   s0_tag_q;
+  rpu_stage #(.W(CW + DirW + 1 + SbDataW + TagW)) u_s0 (
+    .clk_i, .rst_ni, .valid_i, .d_i({hz_abs, vz_abs, sign_ok, sb_data, tag_i}),
+    .valid_o(s0_valid_q), .q_o({s0_hz_abs_q, s0_vz_abs_q, s0_sign_ok_q, s0_sb_q, s0_tag_q}));
 
   // ---- stage 1: the quotient fits CW+1 bits iff num >> (CW+1) < |v̂_z| (then rpu_div's
   // precondition holds; otherwise its result is unused) ----
@@ -114,45 +110,22 @@ module rpu_ray_plane #(
   wire [HiW-1:0]   num_hi  = num[NumW-1:QuotW];
   wire             quot_ok = {{(DirW - HiW){1'b0}}, num_hi} < s0_vz_abs_q;
 
-  reg              s1_valid_q;
-  reg [NumW-1:0]   s1_num_q;
-  reg [DirW-1:0]   s1_den_q;
-  reg [SbW-1:0]    s1_sb_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      s0_valid_q <= 1'b0;
-      s1_valid_q <= 1'b0;
-    end else begin
-      s0_valid_q <= valid_i;
-      s1_valid_q <= s0_valid_q;
-    end
-  end
-  always @(posedge clk_i) begin
-    s1_num_q <= num;
-    s1_den_q <= s0_vz_abs_q;
-    s1_sb_q  <= {s0_tag_q, s0_sign_ok_q & quot_ok, s0_sb_q};
-  end
+  wire              s1_valid_q;
+  wire [NumW-1:0]   s1_num_q;
+  wire [DirW-1:0]   s1_den_q;
+  wire [SbW-1:0]    s1_sb_q;
+  rpu_stage #(.W(NumW + DirW + SbW)) u_s1 (
+    .clk_i, .rst_ni, .valid_i(s0_valid_q),
+    .d_i({num, s0_vz_abs_q, s0_tag_q, s0_sign_ok_q & quot_ok, s0_sb_q}),
+    .valid_o(s1_valid_q), .q_o({s1_num_q, s1_den_q, s1_sb_q}));
 
   // ---- t0 = floor(|h_z|·2^FV / |v̂_z|), the context in the divider's tag ----
   wire             dv_valid;
   wire [QuotW-1:0] t0;
   wire [SbW-1:0]   dv_sb;
-  rpu_div #(
-    .NumW (NumW),
-    .DenW (DirW),
-    .QuotW(QuotW),
-    .TagW (SbW)
-  ) u_div (
-    .clk_i  (clk_i),
-    .rst_ni (rst_ni),
-    .valid_i(s1_valid_q),
-    .num_i  (s1_num_q),
-    .den_i  (s1_den_q),
-    .tag_i  (s1_sb_q),
-    .valid_o(dv_valid),
-    .quot_o (t0),
-    .tag_o  (dv_sb)
-  );
+  rpu_div #(.NumW(NumW), .DenW(DirW), .QuotW(QuotW), .TagW(SbW)) u_div (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .num_i(s1_num_q), .den_i(s1_den_q),
+    .tag_i(s1_sb_q), .valid_o(dv_valid), .quot_o(t0), .tag_o(dv_sb));
   wire [TagW-1:0]        dv_tag;
   wire                   dv_ok;
   wire signed [DqW-1:0]  dv_nhz;
@@ -165,16 +138,13 @@ module rpu_ray_plane #(
   localparam integer PtTagW = TagW + 1 + DqW + 3 * EdgeW + 2 * CW;
   wire [QuotW:0]      t0_s = {1'b0, t0};
   wire [PtW-1:0]      ptx, pty;
-  wire                pt_valid, pty_valid_unused;
+  wire                pt_valid;
   wire [PtTagW-1:0]   pt_tag;
-  wire                pty_tag_unused;
-  rpu_mul #(.AW(QuotW + 1), .BW(DirW), .Signed(1), .TagW(PtTagW)) u_ptx (
-    .clk_i, .rst_ni, .valid_i(dv_valid), .a_i(t0_s), .b_i(dv_vx),
+  rpu_mul_vec #(.Count(2), .AW(QuotW + 1), .BW(DirW), .Signed(1), .ShareA(1), .TagW(PtTagW))
+    u_pt (
+    .clk_i, .rst_ni, .valid_i(dv_valid), .a_i(t0_s), .b_i({dv_vy, dv_vx}),
     .tag_i({dv_tag, dv_ok, dv_nhz, dv_wz, dv_wy, dv_wx, dv_hy, dv_hx}),
-    .valid_o(pt_valid), .p_o(ptx), .tag_o(pt_tag));
-  rpu_mul #(.AW(QuotW + 1), .BW(DirW), .Signed(1), .TagW(1)) u_pty (
-    .clk_i, .rst_ni, .valid_i(dv_valid), .a_i(t0_s), .b_i(dv_vy), .tag_i(1'b0),
-    .valid_o(pty_valid_unused), .p_o(pty), .tag_o(pty_tag_unused));
+    .valid_o(pt_valid), .p_o({pty, ptx}), .tag_o(pt_tag));
   wire [TagW-1:0]       pt_tg;
   wire                  pt_ok;
   wire signed [DqW-1:0] pt_nhz;
@@ -195,64 +165,37 @@ module rpu_ray_plane #(
   wire                   ok     = pt_ok & fits_x & fits_y;
   // p0 − h = floor(v̂·t0 / 2^FV); its low DqW bits are exact when p0 fits (|p0 − h| < 2^CW).
   // Zeroed, with −h_z and p0, when the point is not valid: then the depth and p0 are zero.
-  reg              sb_valid_q;
-  reg              sb_ok_q;
-  reg [CW-1:0]     sb_p0x_q, sb_p0y_q;
-  reg [DqW-1:0]    sb_dqx_q, sb_dqy_q, sb_nhz_q;
-  reg [EdgeW-1:0]  sb_wx_q, sb_wy_q, sb_wz_q;
-  reg [TagW-1:0]   sb_tag_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) sb_valid_q <= 1'b0;
-    else         sb_valid_q <= pt_valid;
-  end
-  always @(posedge clk_i) begin
-    sb_ok_q  <= ok;
-    sb_p0x_q <= ok ? p0x[CW-1:0] : {CW{1'b0}};
-    sb_p0y_q <= ok ? p0y[CW-1:0] : {CW{1'b0}};
-    sb_dqx_q <= ok ? fx[DqW-1:0] : {DqW{1'b0}};
-    sb_dqy_q <= ok ? fy[DqW-1:0] : {DqW{1'b0}};
-    sb_nhz_q <= ok ? pt_nhz : {DqW{1'b0}};
-    sb_wx_q  <= pt_wx;
-    sb_wy_q  <= pt_wy;
-    sb_wz_q  <= pt_wz;
-    sb_tag_q <= pt_tg;
-  end
+  wire              sb_valid_q;
+  wire              sb_ok_q;
+  wire [2*CW-1:0]   sb_p0_q;   // {p0_y, p0_x}
+  wire [3*DqW-1:0]  sb_dq_q;   // {−h_z, p0_y − h_y, p0_x − h_x}
+  wire [3*EdgeW-1:0] sb_w_q;   // {W_z, W_y, W_x}
+  wire [TagW-1:0]   sb_tag_q;
+  rpu_stage #(.W(1 + 2*CW + 3*DqW + 3*EdgeW + TagW)) u_sb (
+    .clk_i, .rst_ni, .valid_i(pt_valid),
+    .d_i({ok, ok ? {p0y[CW-1:0], p0x[CW-1:0]} : {2*CW{1'b0}},
+          ok ? {pt_nhz, fy[DqW-1:0], fx[DqW-1:0]} : {3*DqW{1'b0}}, pt_wz, pt_wy, pt_wx, pt_tg}),
+    .valid_o(sb_valid_q), .q_o({sb_ok_q, sb_p0_q, sb_dq_q, sb_w_q, sb_tag_q}));
 
   // ---- the three depth products (exact); {tag, ok, p0} in x's tag ----
   localparam integer DTagW = TagW + 1 + 2 * CW;
   wire [PW-1:0]      px, py, pz;
-  wire               d_valid, dy_valid_unused, dz_valid_unused, dy_tag_unused, dz_tag_unused;
+  wire               d_valid;
   wire [DTagW-1:0]   d_tag;
-  rpu_mul #(.AW(DqW), .BW(EdgeW), .Signed(1), .TagW(DTagW)) u_px (
-    .clk_i, .rst_ni, .valid_i(sb_valid_q), .a_i(sb_dqx_q), .b_i(sb_wx_q),
-    .tag_i({sb_tag_q, sb_ok_q, sb_p0y_q, sb_p0x_q}), .valid_o(d_valid), .p_o(px), .tag_o(d_tag));
-  rpu_mul #(.AW(DqW), .BW(EdgeW), .Signed(1), .TagW(1)) u_py (
-    .clk_i, .rst_ni, .valid_i(sb_valid_q), .a_i(sb_dqy_q), .b_i(sb_wy_q), .tag_i(1'b0),
-    .valid_o(dy_valid_unused), .p_o(py), .tag_o(dy_tag_unused));
-  rpu_mul #(.AW(DqW), .BW(EdgeW), .Signed(1), .TagW(1)) u_pz (
-    .clk_i, .rst_ni, .valid_i(sb_valid_q), .a_i(sb_nhz_q), .b_i(sb_wz_q), .tag_i(1'b0),
-    .valid_o(dz_valid_unused), .p_o(pz), .tag_o(dz_tag_unused));
+  rpu_mul_vec #(.Count(3), .AW(DqW), .BW(EdgeW), .Signed(1), .TagW(DTagW)) u_pd (
+    .clk_i, .rst_ni, .valid_i(sb_valid_q), .a_i(sb_dq_q), .b_i(sb_w_q),
+    .tag_i({sb_tag_q, sb_ok_q, sb_p0_q}), .valid_o(d_valid), .p_o({pz, py, px}), .tag_o(d_tag));
 
   // ---- stage C: depth = the sum of the three products (one carry-save step and one adder,
   // exact modulo 2^SW: the sum fits) ----
-  wire [SW-1:0] x0   = {{2{px[PW-1]}}, px};
-  wire [SW-1:0] x1   = {{2{py[PW-1]}}, py};
-  wire [SW-1:0] x2   = {{2{pz[PW-1]}}, pz};
-  wire [SW-1:0] cs_s = x0 ^ x1 ^ x2;
-  wire [SW-2:0] cs_c = (x0[SW-2:0] & x1[SW-2:0]) | (x0[SW-2:0] & x2[SW-2:0]) |
-                       (x1[SW-2:0] & x2[SW-2:0]);
-  wire [SW-1:0] dsum = cs_s + {cs_c, 1'b0};
+  wire [SW-1:0] dsum;
+  rpu_add3 #(.W(SW)) u_dsum (
+    .a_i({{2{px[PW-1]}}, px}), .b_i({{2{py[PW-1]}}, py}), .c_i({{2{pz[PW-1]}}, pz}), .s_o(dsum));
   wire [DepthW-1:0] depth = {{(DepthW - SW){dsum[SW-1]}}, dsum};
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= d_valid;
-  end
-  always @(posedge clk_i) begin
-    p0_valid_o <= d_tag[2*CW];
-    p0_o       <= {{CW{1'b0}}, d_tag[2*CW-1:0]};
-    depth_o    <= depth;
-    tag_o      <= d_tag[DTagW-1 -: TagW];
-  end
+  rpu_stage #(.W(1 + 3*CW + DepthW + TagW)) u_out (
+    .clk_i, .rst_ni, .valid_i(d_valid),
+    .d_i({d_tag[2*CW], {CW{1'b0}}, d_tag[2*CW-1:0], depth, d_tag[DTagW-1 -: TagW]}),
+    .valid_o, .q_o({p0_valid_o, p0_o, depth_o, tag_o}));
 
   // The products' top bits are sign copies, their low FV bits the floor's dropped fraction; the
   // bits of p0 − h above DqW only matter for an invalid point (caught by the range test).

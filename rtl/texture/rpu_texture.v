@@ -73,15 +73,15 @@ module rpu_texture #(
   input  wire [3*UW-1:0]     u2_i,
   input  wire [W02W-1:0]     w0_2_i,    // texture half-width², LSB², unsigned
   input  wire [TagW-1:0]     tag_i,
-  output reg                 valid_o,
-  output reg                 pr1_o,
-  output reg                 pr2_o,
-  output reg                 pr3_o,
-  output reg                 covers_o,  // pr1 ∧ (pr2 ∨ pr3)
-  output reg  [TW-1:0]       t_o,       // t̂, Q(3.FT), signed
-  output reg  [3*XW-1:0]     x_o,       // X = s(t̂), {z, y, x}, LSB, signed each
-  output reg                 ovf_o,     // sticky overflow bit of the pair
-  output reg  [TagW-1:0]     tag_o
+  output wire                valid_o,
+  output wire                pr1_o,
+  output wire                pr2_o,
+  output wire                pr3_o,
+  output wire                covers_o,  // pr1 ∧ (pr2 ∨ pr3)
+  output wire [TW-1:0]       t_o,       // t̂, Q(3.FT), signed
+  output wire [3*XW-1:0]     x_o,       // X = s(t̂), {z, y, x}, LSB, signed each
+  output wire                ovf_o,     // sticky overflow bit of the pair
+  output wire [TagW-1:0]     tag_o
 );
   localparam integer CW   = CoordW;
   localparam integer R1W  = CW + 1;          // r1 = p0 − p1
@@ -134,12 +134,8 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The segment context used after the front end: {w0_2, p0, p1, d, u1, u2, l2, guide 1, guide 2}.
   localparam integer CtxW = W02W + 6 * CW + 3 * DW + 6 * UW + L2W + 2 * GdW;
-  reg [3*R1W-1:0]  s1_r1_q;
-  reg [3*R2W-1:0]  s1_r2_q;
-  reg [CtxW-1:0]   s1_ctx_q;
-  reg [InvW+6:0]   s1_inv_q;
-  reg [TagW-1:0]   s1_tag_q;
-  reg              s1_valid_q;
+  wire [3*R1W-1:0] r1v;
+  wire [3*R2W-1:0] r2v;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_r
       wire [CW-1:0]  p0 = p0_i[c*CW +: CW];
@@ -149,23 +145,22 @@ module rpu_texture #(
       wire [R2W-1:0] p1x = {{(R2W - CW){p1[CW-1]}}, p1};
       wire [R2W-1:0] dx  = {{(R2W - DW){d[DW-1]}}, d};
       wire [R2W-1:0] r1  = p0x - p1x;  // |r1| < 2^CW: its low R1W bits are exact
-      always @(posedge clk_i) begin
-        s1_r1_q[c*R1W +: R1W] <= r1[R1W-1:0];
-        s1_r2_q[c*R2W +: R2W] <= r1 - dx;
-      end
+      assign r1v[c*R1W +: R1W] = r1[R1W-1:0];
+      assign r2v[c*R2W +: R2W] = r1 - dx;
       wire unused_r1 = r1[R2W-1];
     end
   endgenerate
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) s1_valid_q <= 1'b0;
-    else         s1_valid_q <= valid_i;
-  end
-  always @(posedge clk_i) begin
-    s1_ctx_q <= {w0_2_i, p0_i, p1_i, d_i, u1_i, u2_i, l2_i,
-                 mode1_i, h1_i, a1_i, b1_i, mode2_i, h2_i, a2_i, b2_i};
-    s1_inv_q <= {inv_s_i, inv_m_i};
-    s1_tag_q <= tag_i;
-  end
+  wire [3*R1W-1:0]  s1_r1_q;
+  wire [3*R2W-1:0]  s1_r2_q;
+  wire [CtxW-1:0]   s1_ctx_q;
+  wire [InvW+6:0]   s1_inv_q;
+  wire [TagW-1:0]   s1_tag_q;
+  wire              s1_valid_q;
+  rpu_stage #(.W(3*R1W + 3*R2W + CtxW + InvW + 7 + TagW)) u_s1 (
+    .clk_i, .rst_ni, .valid_i,
+    .d_i({r1v, r2v, w0_2_i, p0_i, p1_i, d_i, u1_i, u2_i, l2_i,
+          mode1_i, h1_i, a1_i, b1_i, mode2_i, h2_i, a2_i, b2_i, inv_s_i, inv_m_i, tag_i}),
+    .valid_o(s1_valid_q), .q_o({s1_r1_q, s1_r2_q, s1_ctx_q, s1_inv_q, s1_tag_q}));
   wire [3*DW-1:0] s1_d = s1_ctx_q[6*UW + L2W + 2*GdW +: 3*DW];
 
   // ---------------------------------------------------------------------------------------------
@@ -179,37 +174,21 @@ module rpu_texture #(
   wire [3*S2PW-1:0] s2p;
   wire              m_valid;
   wire [W02W+L2W-1:0] m_tag;
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_prod
-      wire [R1W-1:0] r1 = s1_r1_q[c*R1W +: R1W];
-      wire [R2W-1:0] r2 = s1_r2_q[c*R2W +: R2W];
-      wire [DW-1:0]  d  = s1_d[c*DW +: DW];
-      wire           v_f1, v_f2, v_s1, v_s2, t_f2, t_s1, t_s2;
-      if (c == 0) begin : g_ctl
-        rpu_mul #(.AW(R1W), .BW(DW), .Signed(1), .TagW(W02W + L2W), .Latency(LF)) u_f1 (
-          .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(r1), .b_i(d),
-          .tag_i({s1_ctx_q[CtxW-1 -: W02W], s1_ctx_q[2*GdW +: L2W]}),
-          .valid_o(v_f1), .p_o(f1p[c*F1PW +: F1PW]), .tag_o(m_tag));
-        assign m_valid = v_f1;
-      end else begin : g_no_ctl
-        wire t_f1;
-        rpu_mul #(.AW(R1W), .BW(DW), .Signed(1), .TagW(1), .Latency(LF)) u_f1 (
-          .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(r1), .b_i(d), .tag_i(1'b0),
-          .valid_o(v_f1), .p_o(f1p[c*F1PW +: F1PW]), .tag_o(t_f1));
-        wire unused_ctl = ^{v_f1, t_f1};
-      end
-      rpu_mul #(.AW(DW), .BW(R2W), .Signed(1), .TagW(1), .Latency(LF)) u_f2 (
-        .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(d), .b_i(r2), .tag_i(1'b0),
-        .valid_o(v_f2), .p_o(f2p[c*F2PW +: F2PW]), .tag_o(t_f2));
-      rpu_mul #(.AW(R1W), .BW(R1W), .Signed(1), .TagW(1), .Latency(LF)) u_s1 (
-        .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(r1), .b_i(r1), .tag_i(1'b0),
-        .valid_o(v_s1), .p_o(s1p[c*S1PW +: S1PW]), .tag_o(t_s1));
-      rpu_mul #(.AW(R2W), .BW(R2W), .Signed(1), .TagW(1), .Latency(LF)) u_s2 (
-        .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(r2), .b_i(r2), .tag_i(1'b0),
-        .valid_o(v_s2), .p_o(s2p[c*S2PW +: S2PW]), .tag_o(t_s2));
-      wire unused_prod = ^{v_f2, v_s1, v_s2, t_f2, t_s1, t_s2};
-    end
-  endgenerate
+  wire f2_valid, s1_valid, s2_valid, f2_tag, s1_tag, s2_tag;
+  rpu_mul_vec #(.Count(3), .AW(R1W), .BW(DW), .Signed(1), .TagW(W02W + L2W), .Latency(LF)) u_f1 (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_r1_q), .b_i(s1_d),
+    .tag_i({s1_ctx_q[CtxW-1 -: W02W], s1_ctx_q[2*GdW +: L2W]}),
+    .valid_o(m_valid), .p_o(f1p), .tag_o(m_tag));
+  rpu_mul_vec #(.Count(3), .AW(DW), .BW(R2W), .Signed(1), .TagW(1), .Latency(LF)) u_f2 (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_d), .b_i(s1_r2_q), .tag_i(1'b0),
+    .valid_o(f2_valid), .p_o(f2p), .tag_o(f2_tag));
+  rpu_mul_vec #(.Count(3), .AW(R1W), .BW(R1W), .Signed(1), .TagW(1), .Latency(LF)) u_s1sq (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_r1_q), .b_i(s1_r1_q), .tag_i(1'b0),
+    .valid_o(s1_valid), .p_o(s1p), .tag_o(s1_tag));
+  rpu_mul_vec #(.Count(3), .AW(R2W), .BW(R2W), .Signed(1), .TagW(1), .Latency(LF)) u_s2sq (
+    .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_r2_q), .b_i(s1_r2_q), .tag_i(1'b0),
+    .valid_o(s2_valid), .p_o(s2p), .tag_o(s2_tag));
+  wire unused_prod = ^{f2_valid, s1_valid, s2_valid, f2_tag, s1_tag, s2_tag};
 
   // The context's delay lines (plain stages: shift-register LUTs, no logic reads them): the
   // chord's operand inv and the guide operands {L2, guide 1, guide 2} for LF + 2 stages to the
@@ -247,34 +226,25 @@ module rpu_texture #(
   wire [S2W-1:0]  s2x0 = {{(S2W-S2PW){1'b0}}, s2p[0*S2PW +: S2PW]};
   wire [S2W-1:0]  s2x1 = {{(S2W-S2PW){1'b0}}, s2p[1*S2PW +: S2PW]};
   wire [S2W-1:0]  s2x2 = {{(S2W-S2PW){1'b0}}, s2p[2*S2PW +: S2PW]};
-  wire [DotW-1:0] f1sum = (f1x0 ^ f1x1 ^ f1x2) +
-      {(f1x0[DotW-2:0] & f1x1[DotW-2:0]) | (f1x0[DotW-2:0] & f1x2[DotW-2:0]) |
-       (f1x1[DotW-2:0] & f1x2[DotW-2:0]), 1'b0};
-  wire [F2W-1:0]  f2sum = (f2x0 ^ f2x1 ^ f2x2) +
-      {(f2x0[F2W-2:0] & f2x1[F2W-2:0]) | (f2x0[F2W-2:0] & f2x2[F2W-2:0]) |
-       (f2x1[F2W-2:0] & f2x2[F2W-2:0]), 1'b0};
-  wire [S1W-1:0]  s1sum = (s1x0 ^ s1x1 ^ s1x2) +
-      {(s1x0[S1W-2:0] & s1x1[S1W-2:0]) | (s1x0[S1W-2:0] & s1x2[S1W-2:0]) |
-       (s1x1[S1W-2:0] & s1x2[S1W-2:0]), 1'b0};
-  wire [S2W-1:0]  s2sum = (s2x0 ^ s2x1 ^ s2x2) +
-      {(s2x0[S2W-2:0] & s2x1[S2W-2:0]) | (s2x0[S2W-2:0] & s2x2[S2W-2:0]) |
-       (s2x1[S2W-2:0] & s2x2[S2W-2:0]), 1'b0};
+  wire [DotW-1:0] f1sum;
+  wire [F2W-1:0]  f2sum;
+  wire [S1W-1:0]  s1sum;
+  wire [S2W-1:0]  s2sum;
+  rpu_add3 #(.W(DotW)) u_f1sum (.a_i(f1x0), .b_i(f1x1), .c_i(f1x2), .s_o(f1sum));
+  rpu_add3 #(.W(F2W))  u_f2sum (.a_i(f2x0), .b_i(f2x1), .c_i(f2x2), .s_o(f2sum));
+  rpu_add3 #(.W(S1W))  u_s1sum (.a_i(s1x0), .b_i(s1x1), .c_i(s1x2), .s_o(s1sum));
+  rpu_add3 #(.W(S2W))  u_s2sum (.a_i(s2x0), .b_i(s2x1), .c_i(s2x2), .s_o(s2sum));
 
-  reg [DotW-1:0]   t1_f1_q;
-  reg [F2W-1:0]    t1_f2_q;
-  reg [S1W-1:0]    t1_s1_q;
-  reg [S2W-1:0]    t1_s2_q;
-  reg [W02W-1:0]   t1_w02_q;
-  reg [L2W-1:0]    t1_l2_q;
-  reg              t1_valid_q;
-  always @(posedge clk_i) begin
-    t1_f1_q  <= f1sum;
-    t1_f2_q  <= f2sum;
-    t1_s1_q  <= s1sum;
-    t1_s2_q  <= s2sum;
-    t1_w02_q <= m_tag[W02W+L2W-1 -: W02W];
-    t1_l2_q  <= m_tag[L2W-1:0];
-  end
+  wire [DotW-1:0]   t1_f1_q;
+  wire [F2W-1:0]    t1_f2_q;
+  wire [S1W-1:0]    t1_s1_q;
+  wire [S2W-1:0]    t1_s2_q;
+  wire [W02W-1:0]   t1_w02_q;
+  wire [L2W-1:0]    t1_l2_q;
+  wire              t1_valid_q;
+  rpu_stage #(.W(DotW + F2W + S1W + S2W + W02W + L2W)) u_t1 (
+    .clk_i, .rst_ni, .valid_i(m_valid), .d_i({f1sum, f2sum, s1sum, s2sum, m_tag}),
+    .valid_o(t1_valid_q), .q_o({t1_f1_q, t1_f2_q, t1_s1_q, t1_s2_q, t1_w02_q, t1_l2_q}));
 
   // ---------------------------------------------------------------------------------------------
   // Stage T2: pr1, pr2; the chord's dot clamp(r1·d, 0, L2).
@@ -290,23 +260,12 @@ module rpu_texture #(
   wire                   pr1    = ~f1_neg & (t1_f2_q[F2W-1] | ~(|t1_f2_q));
   wire                   pr2    = ~m1[S1W-1] | ~m2[S2W-1];
 
-  reg [DotW-1:0]   s3_dot_q;
-  reg              s3_pr1_q, s3_pr2_q;
-  reg              s3_valid_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      t1_valid_q <= 1'b0;
-      s3_valid_q <= 1'b0;
-    end else begin
-      t1_valid_q <= m_valid;
-      s3_valid_q <= t1_valid_q;
-    end
-  end
-  always @(posedge clk_i) begin
-    s3_dot_q <= dot;
-    s3_pr1_q <= pr1;
-    s3_pr2_q <= pr2;
-  end
+  wire [DotW-1:0]   s3_dot_q;
+  wire              s3_pr1_q, s3_pr2_q;
+  wire              s3_valid_q;
+  rpu_stage #(.W(DotW + 2)) u_s3 (
+    .clk_i, .rst_ni, .valid_i(t1_valid_q), .d_i({dot, pr1, pr2}), .valid_o(s3_valid_q),
+    .q_o({s3_dot_q, s3_pr1_q, s3_pr2_q}));
   wire [InvW+6:0] s3_inv_q = dl_out[LoW +: InvW + 7];
   wire [LoW-1:0]  s3_lo_q  = dl_out[LoW-1:0];
 
@@ -426,22 +385,21 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The result fields that ride to the end: {tag, pr1, pr2, w0_2, t̂, X, ovf}.
   localparam integer ResW = TagW + 2 + W02W + TW + 3 * XW + 1;
-  reg [3*EW-1:0]   e1_e_q;
-  reg [ResW-1:0]   e1_res_q;
-  reg              e1_valid_q;
+  wire [3*EW-1:0] e_v;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_e
       wire [XW-1:0] xk = cp_x[c*XW +: XW];
       wire [CW-1:0] pk = cp_p0[c*CW +: CW];
-      always @(posedge clk_i)
-        e1_e_q[c*EW +: EW] <= {{(EW-XW){xk[XW-1]}}, xk} - {{(EW-CW){pk[CW-1]}}, pk};
+      assign e_v[c*EW +: EW] = {{(EW-XW){xk[XW-1]}}, xk} - {{(EW-CW){pk[CW-1]}}, pk};
     end
   endgenerate
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) e1_valid_q <= 1'b0;
-    else         e1_valid_q <= cp_valid;
-  end
-  always @(posedge clk_i) e1_res_q <= {cp_tag, cp_pr1, cp_pr2, cp_w02, cp_t, cp_x, cp_ovf};
+  wire [3*EW-1:0]   e1_e_q;
+  wire [ResW-1:0]   e1_res_q;
+  wire              e1_valid_q;
+  rpu_stage #(.W(3*EW + ResW)) u_e1 (
+    .clk_i, .rst_ni, .valid_i(cp_valid),
+    .d_i({e_v, cp_tag, cp_pr1, cp_pr2, cp_w02, cp_t, cp_x, cp_ovf}),
+    .valid_o(e1_valid_q), .q_o({e1_e_q, e1_res_q}));
 
   // ---------------------------------------------------------------------------------------------
   // The squares e_k² (exact); the result fields in x's tag.
@@ -449,24 +407,9 @@ module rpu_texture #(
   wire [3*EPW-1:0] esq;
   wire             e2_valid;
   wire [ResW-1:0]  e2_res;
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_sq
-      wire [EW-1:0] ek = e1_e_q[c*EW +: EW];
-      wire          v_sq;
-      if (c == 0) begin : g_ctl
-        rpu_mul #(.AW(EW), .BW(EW), .Signed(1), .TagW(ResW)) u_sq (
-          .clk_i, .rst_ni, .valid_i(e1_valid_q), .a_i(ek), .b_i(ek), .tag_i(e1_res_q),
-          .valid_o(v_sq), .p_o(esq[c*EPW +: EPW]), .tag_o(e2_res));
-        assign e2_valid = v_sq;
-      end else begin : g_no_ctl
-        wire t_sq;
-        rpu_mul #(.AW(EW), .BW(EW), .Signed(1), .TagW(1)) u_sq (
-          .clk_i, .rst_ni, .valid_i(e1_valid_q), .a_i(ek), .b_i(ek), .tag_i(1'b0),
-          .valid_o(v_sq), .p_o(esq[c*EPW +: EPW]), .tag_o(t_sq));
-        wire unused_ctl = ^{v_sq, t_sq};
-      end
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(3), .AW(EW), .BW(EW), .Signed(1), .TagW(ResW)) u_sq (
+    .clk_i, .rst_ni, .valid_i(e1_valid_q), .a_i(e1_e_q), .b_i(e1_e_q), .tag_i(e1_res_q),
+    .valid_o(e2_valid), .p_o(esq), .tag_o(e2_res));
 
   // ---------------------------------------------------------------------------------------------
   // Stage E3: |e|² (one carry-save step and one adder, exact in ESW bits).
@@ -474,20 +417,14 @@ module rpu_texture #(
   wire [ESW-1:0] ex0 = {2'b00, esq[0*EPW +: EPW]};
   wire [ESW-1:0] ex1 = {2'b00, esq[1*EPW +: EPW]};
   wire [ESW-1:0] ex2 = {2'b00, esq[2*EPW +: EPW]};
-  wire [ESW-1:0] esum = (ex0 ^ ex1 ^ ex2) +
-      {(ex0[ESW-2:0] & ex1[ESW-2:0]) | (ex0[ESW-2:0] & ex2[ESW-2:0]) |
-       (ex1[ESW-2:0] & ex2[ESW-2:0]), 1'b0};
-  reg [ESW-1:0]  e3_sum_q;
-  reg [ResW-1:0] e3_res_q;
-  reg            e3_valid_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) e3_valid_q <= 1'b0;
-    else         e3_valid_q <= e2_valid;
-  end
-  always @(posedge clk_i) begin
-    e3_sum_q <= esum;
-    e3_res_q <= e2_res;
-  end
+  wire [ESW-1:0]  esum;
+  rpu_add3 #(.W(ESW)) u_esum (.a_i(ex0), .b_i(ex1), .c_i(ex2), .s_o(esum));
+  wire [ESW-1:0]  e3_sum_q;
+  wire [ResW-1:0] e3_res_q;
+  wire            e3_valid_q;
+  rpu_stage #(.W(ESW + ResW)) u_e3 (
+    .clk_i, .rst_ni, .valid_i(e2_valid), .d_i({esum, e2_res}), .valid_o(e3_valid_q),
+    .q_o({e3_sum_q, e3_res_q}));
 
   // ---------------------------------------------------------------------------------------------
   // Stage E4: pr3 = |e|² ≤ w0_2 (exact), covers; the outputs.
@@ -501,22 +438,12 @@ module rpu_texture #(
   assign {r_tag, r_pr1, r_pr2, r_w02, r_t, r_x, r_ovf} = e3_res_q;
   wire signed [ESW-1:0] m3 = {{(ESW-W02W){1'b0}}, r_w02} - e3_sum_q;
   wire pr3 = ~m3[ESW-1];
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_o <= 1'b0;
-    else         valid_o <= e3_valid_q;
-  end
   // Loaded only with a valid pair: the fields that only ride along leave flip-flops, not the
   // shift-register LUTs Yosys would pack their plain stages into.
-  always @(posedge clk_i) if (e3_valid_q) begin
-    pr1_o    <= r_pr1;
-    pr2_o    <= r_pr2;
-    pr3_o    <= pr3;
-    covers_o <= r_pr1 & (r_pr2 | pr3);
-    t_o      <= r_t;
-    x_o      <= r_x;
-    ovf_o    <= r_ovf;
-    tag_o    <= r_tag;
-  end
+  rpu_stage #(.W(4 + TW + 3*XW + 1 + TagW), .Hold(1)) u_out (
+    .clk_i, .rst_ni, .valid_i(e3_valid_q),
+    .d_i({r_pr1, r_pr2, pr3, r_pr1 & (r_pr2 | pr3), r_t, r_x, r_ovf, r_tag}),
+    .valid_o, .q_o({pr1_o, pr2_o, pr3_o, covers_o, t_o, x_o, ovf_o, tag_o}));
 
   wire unused_bits = ^w_unused;
 endmodule

@@ -105,250 +105,132 @@ module rpu_ray_gen #(
   wire [3*EdgeOutW-1:0] swi, swj;         // exact
   wire                m1_valid;
   wire [C1W-1:0]      c1;
-
+  localparam integer PvW = VgW + IW;
+  wire [6*PvW-1:0]    p_v;                // {j·dy, i·dx}, lanes 0..2 and 3..5
+  wire                m1b_valid;
+  wire                m1b_tag;
+  rpu_mul_vec #(.Count(6), .AW(VgW), .BW(IW), .Signed(1), .TagW(C1W), .Latency(L1)) u_dir (
+    .clk_i, .rst_ni, .valid_i, .a_i({dy_i, dx_i}), .b_i({{3{j_s}}, {3{i_s}}}),
+    .tag_i({tag_i, sw_i, et0_i, el0_i, v0_i}), .valid_o(m1_valid), .p_o(p_v), .tag_o(c1));
+  rpu_mul_vec #(.Count(6), .AW(EgW), .BW(IW), .Signed(1), .TagW(1), .Latency(L1)) u_edge (
+    .clk_i, .rst_ni, .valid_i, .a_i({sw_i, sw_i}), .b_i({{3{j_s}}, {3{i_s}}}), .tag_i(1'b0),
+    .valid_o(m1b_valid), .p_o({swj, swi}), .tag_o(m1b_tag));
   genvar c;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_m1
-      wire [VgW+IW-1:0] p_dx, p_dy;
-      wire              v_dx, v_dy, v_si, v_sj, t_dy, t_si, t_sj;
-      if (c == 0) begin : g_ctl
-        rpu_mul #(.AW(VgW), .BW(IW), .Signed(1), .TagW(C1W), .Latency(L1)) u_dx (
-          .clk_i, .rst_ni, .valid_i, .a_i(dx_i[c*VgW +: VgW]), .b_i(i_s),
-          .tag_i({tag_i, sw_i, et0_i, el0_i, v0_i}), .valid_o(v_dx), .p_o(p_dx), .tag_o(c1));
-        assign m1_valid = v_dx;
-      end else begin : g_no_ctl
-        wire t_dx;
-        rpu_mul #(.AW(VgW), .BW(IW), .Signed(1), .TagW(1), .Latency(L1)) u_dx (
-          .clk_i, .rst_ni, .valid_i, .a_i(dx_i[c*VgW +: VgW]), .b_i(i_s), .tag_i(1'b0),
-          .valid_o(v_dx), .p_o(p_dx), .tag_o(t_dx));
-        wire unused_ctl = ^{v_dx, t_dx};
-      end
-      rpu_mul #(.AW(VgW), .BW(IW), .Signed(1), .TagW(1), .Latency(L1)) u_dy (
-        .clk_i, .rst_ni, .valid_i, .a_i(dy_i[c*VgW +: VgW]), .b_i(j_s), .tag_i(1'b0),
-        .valid_o(v_dy), .p_o(p_dy), .tag_o(t_dy));
-      rpu_mul #(.AW(EgW), .BW(IW), .Signed(1), .TagW(1), .Latency(L1)) u_si (
-        .clk_i, .rst_ni, .valid_i, .a_i(sw_i[c*EgW +: EgW]), .b_i(i_s), .tag_i(1'b0),
-        .valid_o(v_si), .p_o(swi[c*EdgeOutW +: EdgeOutW]), .tag_o(t_si));
-      rpu_mul #(.AW(EgW), .BW(IW), .Signed(1), .TagW(1), .Latency(L1)) u_sj (
-        .clk_i, .rst_ni, .valid_i, .a_i(sw_i[c*EgW +: EgW]), .b_i(j_s), .tag_i(1'b0),
-        .valid_o(v_sj), .p_o(swj[c*EdgeOutW +: EdgeOutW]), .tag_o(t_sj));
       // Wrapping VgW-bit arithmetic: the low VgW bits of the exact values.
+      wire [PvW-1:0] p_dx = p_v[c*PvW +: PvW];
+      wire [PvW-1:0] p_dy = p_v[(c + 3)*PvW +: PvW];
       assign dxi[c*VgW +: VgW] = p_dx[VgW-1:0];
       assign dyj[c*VgW +: VgW] = p_dy[VgW-1:0];
-      wire unused_m1 = ^{v_dy, v_si, v_sj, t_dy, t_si, t_sj, p_dx[VgW+IW-1:VgW],
-                         p_dy[VgW+IW-1:VgW]};
+      wire unused_m1 = ^{p_dx[PvW-1:VgW], p_dy[PvW-1:VgW]};
     end
   endgenerate
+  wire unused_m1b = ^{m1b_valid, m1b_tag};
   wire [3*VgW-1:0] v0_1  = c1[0 +: 3*VgW];
   wire [3*EgW-1:0] el0_1 = c1[3*VgW +: 3*EgW];
   wire [3*EgW-1:0] et0_1 = c1[3*VgW+3*EgW +: 3*EgW];
   wire [3*EgW-1:0] sw_1  = c1[3*VgW+6*EgW +: 3*EgW];
   wire [TagW-1:0]  tag_1 = c1[C1W-1 -: TagW];
 
-  // ---- stage 2: v = floor((v0 + i·dx + j·dy) / 2^G) (a sum of three modulo 2^VgW: one
-  // carry-save step and one adder), the named truncation to Q(4.FV); E_left, E_top (exact) ----
-  reg [3*VW-1:0]        s2_v_q;
-  reg [3*EdgeOutW-1:0]  s2_el_q;
-  reg [3*EdgeOutW-1:0]  s2_et_q;
-  reg [3*EgW-1:0]       s2_sw_q;
-  reg [TagW-1:0]        s2_tag_q;
-  reg                   s2_valid_q;
-
+  // ---- stage 2: v = floor((v0 + i·dx + j·dy) / 2^G) (a sum of three modulo 2^VgW, rpu_add3),
+  // the named truncation to Q(4.FV); E_left, E_top (exact) ----
+  wire [3*VW-1:0]       s2_v;
+  wire [3*EdgeOutW-1:0] s2_el, s2_et;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_s2
-      wire [VgW-1:0] x0 = v0_1[c*VgW +: VgW];
-      wire [VgW-1:0] x1 = dxi[c*VgW +: VgW];
-      wire [VgW-1:0] x2 = dyj[c*VgW +: VgW];
-      wire [VgW-1:0] cs_s = x0 ^ x1 ^ x2;
-      wire [VgW-2:0] cs_c = (x0[VgW-2:0] & x1[VgW-2:0]) | (x0[VgW-2:0] & x2[VgW-2:0]) |
-                            (x1[VgW-2:0] & x2[VgW-2:0]);
-      wire [VgW-1:0] vg = cs_s + {cs_c, 1'b0};
+      wire [VgW-1:0] vg;
+      rpu_add3 #(.W(VgW)) u_vg (
+        .a_i(v0_1[c*VgW +: VgW]), .b_i(dxi[c*VgW +: VgW]), .c_i(dyj[c*VgW +: VgW]), .s_o(vg));
       wire signed [EgW-1:0] el0 = el0_1[c*EgW +: EgW];
       wire signed [EgW-1:0] et0 = et0_1[c*EgW +: EgW];
       wire signed [EdgeOutW-1:0] el0_x = {{(EdgeOutW - EgW){el0[EgW-1]}}, el0};
       wire signed [EdgeOutW-1:0] et0_x = {{(EdgeOutW - EgW){et0[EgW-1]}}, et0};
+      // vg >>> G is VW bits wide exactly (VgW − G = VW): the floor, no further narrowing.
+      assign s2_v[c*VW +: VW] = vg[VgW-1:Guard];
       // |el0 − k·σW| < 2^(EdgeOutW−1) for k <= 2^IdxW: exact in EdgeOutW bits.
-      always @(posedge clk_i) begin
-        // vg >>> G is VW bits wide exactly (VgW − G = VW): the floor, no further narrowing.
-        s2_v_q[c*VW +: VW]             <= vg[VgW-1:Guard];
-        s2_el_q[c*EdgeOutW +: EdgeOutW] <= el0_x - swi[c*EdgeOutW +: EdgeOutW];
-        s2_et_q[c*EdgeOutW +: EdgeOutW] <= et0_x - swj[c*EdgeOutW +: EdgeOutW];
-      end
+      assign s2_el[c*EdgeOutW +: EdgeOutW] = el0_x - swi[c*EdgeOutW +: EdgeOutW];
+      assign s2_et[c*EdgeOutW +: EdgeOutW] = et0_x - swj[c*EdgeOutW +: EdgeOutW];
       wire unused_guard = ^vg[Guard-1:0];
     end
   endgenerate
-
-  always @(posedge clk_i) begin
-    s2_sw_q  <= sw_1;
-    s2_tag_q <= tag_1;
-  end
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) s2_valid_q <= 1'b0;
-    else         s2_valid_q <= m1_valid;
-  end
+  wire                  s2_valid_q;
+  wire [SbW-1:0]        s2_sb_q;   // {tag, σW, E_top, E_left, v}
+  rpu_stage #(.W(SbW)) u_s2 (
+    .clk_i, .rst_ni, .valid_i(m1_valid), .d_i({tag_1, sw_1, s2_et, s2_el, s2_v}),
+    .valid_o(s2_valid_q), .q_o(s2_sb_q));
 
   // ---- the squares v_k² (exact) ----
-  // The side band {tag, σW, E_top, E_left, v}, which no logic reads before the output stage,
-  // takes a plain delay line (shift-register LUTs) of L2 + 1 stages to the square root's tag.
+  // The side band, which no logic reads before the output stage, takes a plain delay line
+  // (shift-register LUTs) of L2 + 1 stages to the square root's tag.
   wire [3*RadW-1:0] sq;
   wire              m2_valid;
+  wire              m2_tag;
   reg [(L2+1)*SbW-1:0] sb_dl_q;
-  always @(posedge clk_i)
-    sb_dl_q <= {sb_dl_q[L2*SbW-1:0], s2_tag_q, s2_sw_q, s2_et_q, s2_el_q, s2_v_q};
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_sq
-      wire [VW-1:0] vk = s2_v_q[c*VW +: VW];
-      wire          v_sq, t_sq;
-      rpu_mul #(.AW(VW), .BW(VW), .Signed(1), .TagW(1)) u_sq (
-        .clk_i, .rst_ni, .valid_i(s2_valid_q), .a_i(vk), .b_i(vk), .tag_i(1'b0),
-        .valid_o(v_sq), .p_o(sq[c*RadW +: RadW]), .tag_o(t_sq));
-      if (c == 0) begin : g_ctl
-        assign m2_valid = v_sq;
-        wire unused_ctl = t_sq;
-      end else begin : g_no_ctl
-        wire unused_ctl = ^{v_sq, t_sq};
-      end
-    end
-  endgenerate
+  always @(posedge clk_i) sb_dl_q <= {sb_dl_q[L2*SbW-1:0], s2_sb_q};
+  rpu_mul_vec #(.Count(3), .AW(VW), .BW(VW), .Signed(1), .TagW(1)) u_sq (
+    .clk_i, .rst_ni, .valid_i(s2_valid_q), .a_i(s2_sb_q[SbV +: 3*VW]),
+    .b_i(s2_sb_q[SbV +: 3*VW]), .tag_i(1'b0), .valid_o(m2_valid), .p_o(sq), .tag_o(m2_tag));
+  wire unused_m2 = m2_tag;
 
-  // ---- stage 3: the radicand v·v (exact: three squares of VW-bit values < 2^RadW; one
-  // carry-save step and one adder) ----
-  wire [RadW-1:0] q0 = sq[0*RadW +: RadW];
-  wire [RadW-1:0] q1 = sq[1*RadW +: RadW];
-  wire [RadW-1:0] q2 = sq[2*RadW +: RadW];
-  wire [RadW-1:0] vv_s = q0 ^ q1 ^ q2;
-  wire [RadW-2:0] vv_c = (q0[RadW-2:0] & q1[RadW-2:0]) | (q0[RadW-2:0] & q2[RadW-2:0]) |
-                         (q1[RadW-2:0] & q2[RadW-2:0]);
-  wire [RadW-1:0] vv = vv_s + {vv_c, 1'b0};
-
-  reg [RadW-1:0] s3_rad_q;
-  wire [SbW-1:0] s3_sb_q = sb_dl_q[(L2+1)*SbW-1 -: SbW];
-  reg            s3_valid_q;
-  always @(posedge clk_i) s3_rad_q <= vv;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) s3_valid_q <= 1'b0;
-    else         s3_valid_q <= m2_valid;
-  end
+  // ---- stage 3: the radicand v·v (exact: three squares of VW-bit values < 2^RadW) ----
+  wire [RadW-1:0] vv;
+  rpu_add3 #(.W(RadW)) u_vv (
+    .a_i(sq[0*RadW +: RadW]), .b_i(sq[1*RadW +: RadW]), .c_i(sq[2*RadW +: RadW]), .s_o(vv));
+  wire [RadW-1:0] s3_rad_q;
+  wire [SbW-1:0]  s3_sb_q = sb_dl_q[L2*SbW +: SbW];
+  wire            s3_valid_q;
+  rpu_stage #(.W(RadW)) u_s3 (
+    .clk_i, .rst_ni, .valid_i(m2_valid), .d_i(vv), .valid_o(s3_valid_q), .q_o(s3_rad_q));
 
   // ---- |v| = isqrt(v·v) ----
   wire             sq_valid;
   wire [RootW-1:0] sq_root;
   wire [SbW-1:0]   sq_sb;
-  rpu_sqrt #(
-    .RadW (RadW),
-    .SqrtW(0),
-    .TagW (SbW)
-  ) u_sqrt (
-    .clk_i  (clk_i),
-    .rst_ni (rst_ni),
-    .valid_i(s3_valid_q),
-    .rad_i  (s3_rad_q),
-    .tag_i  (s3_sb_q),
-    .valid_o(sq_valid),
-    .root_o (sq_root),
-    .tag_o  (sq_sb)
-  );
+  rpu_sqrt #(.RadW(RadW), .SqrtW(0), .TagW(SbW)) u_sqrt (
+    .clk_i, .rst_ni, .valid_i(s3_valid_q), .rad_i(s3_rad_q), .tag_i(s3_sb_q),
+    .valid_o(sq_valid), .root_o(sq_root), .tag_o(sq_sb));
 
   // ---- 1/|v| = floor(2^(2FV+2) / |v|) ----
   wire             dv_valid;
   wire [QuotW-1:0] dv_recip;
   wire [SbW-1:0]   dv_sb;
-  rpu_div #(
-    .NumW (NumW),
-    .DenW (RootW),
-    .QuotW(QuotW),
-    .TagW (SbW)
-  ) u_div (
-    .clk_i  (clk_i),
-    .rst_ni (rst_ni),
-    .valid_i(sq_valid),
-    .num_i  ({1'b1, {(NumW - 1){1'b0}}}),
-    .den_i  (sq_root),
-    .tag_i  (sq_sb),
-    .valid_o(dv_valid),
-    .quot_o (dv_recip),
-    .tag_o  (dv_sb)
-  );
+  rpu_div #(.NumW(NumW), .DenW(RootW), .QuotW(QuotW), .TagW(SbW)) u_div (
+    .clk_i, .rst_ni, .valid_i(sq_valid), .num_i({1'b1, {(NumW - 1){1'b0}}}), .den_i(sq_root),
+    .tag_i(sq_sb), .valid_o(dv_valid), .quot_o(dv_recip), .tag_o(dv_sb));
 
-  // ---- v·(1/|v|) (exact; 1/|v| as a non-negative signed operand); the side band in x's tag ----
-  wire [QuotW:0]    recip_s = {1'b0, dv_recip};
+  // ---- v·(1/|v|) (exact; 1/|v| as a non-negative signed operand); the side band in its tag ----
   wire [3*PrdW-1:0] prd;
   wire              m3_valid;
   wire [SbW-1:0]    c3;
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_m3
-      wire [VW-1:0] v = dv_sb[SbV + c*VW +: VW];
-      wire          v_p;
-      if (c == 0) begin : g_ctl
-        rpu_mul #(.AW(QuotW + 1), .BW(VW), .Signed(1), .TagW(SbW)) u_vh (
-          .clk_i, .rst_ni, .valid_i(dv_valid), .a_i(recip_s), .b_i(v), .tag_i(dv_sb),
-          .valid_o(v_p), .p_o(prd[c*PrdW +: PrdW]), .tag_o(c3));
-        assign m3_valid = v_p;
-      end else begin : g_no_ctl
-        wire t_p;
-        rpu_mul #(.AW(QuotW + 1), .BW(VW), .Signed(1), .TagW(1)) u_vh (
-          .clk_i, .rst_ni, .valid_i(dv_valid), .a_i(recip_s), .b_i(v), .tag_i(1'b0),
-          .valid_o(v_p), .p_o(prd[c*PrdW +: PrdW]), .tag_o(t_p));
-        wire unused_ctl = ^{v_p, t_p};
-      end
-    end
-  endgenerate
+  rpu_mul_vec #(.Count(3), .AW(QuotW + 1), .BW(VW), .Signed(1), .ShareA(1), .TagW(SbW)) u_vh (
+    .clk_i, .rst_ni, .valid_i(dv_valid), .a_i({1'b0, dv_recip}), .b_i(dv_sb[SbV +: 3*VW]),
+    .tag_i(dv_sb), .valid_o(m3_valid), .p_o(prd), .tag_o(c3));
 
   // ---- output stage: v̂ = floor(v·(1/|v|) / 2^(FV+2)); E_right, E_bottom ----
-  wire [3*VW-1:0]       o_v  = c3[SbV +: 3 * VW];
   wire [3*EdgeOutW-1:0] o_el = c3[SbEl +: 3 * EdgeOutW];
   wire [3*EdgeOutW-1:0] o_et = c3[SbEt +: 3 * EdgeOutW];
   wire [3*EgW-1:0]      o_sw = c3[SbSw +: 3 * EgW];
-
-  reg [3*VW-1:0]        out_v_q;
-  reg [3*VhW-1:0]       out_vhat_q;
-  reg [3*EdgeOutW-1:0]  out_el_q;
-  reg [3*EdgeOutW-1:0]  out_er_q;
-  reg [3*EdgeOutW-1:0]  out_et_q;
-  reg [3*EdgeOutW-1:0]  out_eb_q;
-  reg [TagW-1:0]        out_tag_q;
-  reg                   out_valid_q;
-
+  wire [3*VhW-1:0]      o_vhat;
+  wire [3*EdgeOutW-1:0] o_er, o_eb;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_out
       wire [PrdW-1:0]            pc   = prd[c*PrdW +: PrdW];
       wire signed [EgW-1:0]      sw   = o_sw[c*EgW +: EgW];
       wire signed [EdgeOutW-1:0] sw_x = {{(EdgeOutW - EgW){sw[EgW-1]}}, sw};
-      wire signed [EdgeOutW-1:0] el   = o_el[c*EdgeOutW +: EdgeOutW];
-      wire signed [EdgeOutW-1:0] et   = o_et[c*EdgeOutW +: EdgeOutW];
+      // prd >>> (FV+2), truncated to Q(2.FV): |v_c| <= |v| gives |v̂_c| <= 2^FV, so the
+      // dropped high bits are copies of the sign.
+      assign o_vhat[c*VhW +: VhW] = pc[DirFrac+2 +: VhW];
       // E_left(i) − σW = E_left(i+1), |·| < 2^(EdgeOutW−1): exact in EdgeOutW bits.
-      wire signed [EdgeOutW-1:0] er   = el - sw_x;
-      wire signed [EdgeOutW-1:0] eb   = et - sw_x;
-      always @(posedge clk_i) begin
-        // prd >>> (FV+2), truncated to Q(2.FV): |v_c| <= |v| gives |v̂_c| <= 2^FV, so the
-        // dropped high bits are copies of the sign.
-        out_vhat_q[c*VhW +: VhW]          <= pc[DirFrac+2 +: VhW];
-        out_er_q[c*EdgeOutW +: EdgeOutW]  <= er;
-        out_eb_q[c*EdgeOutW +: EdgeOutW]  <= eb;
-      end
+      assign o_er[c*EdgeOutW +: EdgeOutW] = o_el[c*EdgeOutW +: EdgeOutW] - sw_x;
+      assign o_eb[c*EdgeOutW +: EdgeOutW] = o_et[c*EdgeOutW +: EdgeOutW] - sw_x;
       wire unused_prd = ^{pc[PrdW-1:DirFrac+2+VhW], pc[DirFrac+1:0]};
     end
   endgenerate
-
-  always @(posedge clk_i) begin
-    out_v_q   <= o_v;
-    out_el_q  <= o_el;
-    out_et_q  <= o_et;
-    out_tag_q <= c3[SbTag +: TagW];
-  end
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) out_valid_q <= 1'b0;
-    else         out_valid_q <= m3_valid;
-  end
-
-  assign valid_o    = out_valid_q;
-  assign v_o        = out_v_q;
-  assign vhat_o     = out_vhat_q;
-  assign e_left_o   = out_el_q;
-  assign e_right_o  = out_er_q;
-  assign e_top_o    = out_et_q;
-  assign e_bottom_o = out_eb_q;
-  assign tag_o      = out_tag_q;
+  rpu_stage #(.W(3*VW + 3*VhW + 4*3*EdgeOutW + TagW)) u_out (
+    .clk_i, .rst_ni, .valid_i(m3_valid),
+    .d_i({c3[SbV +: 3*VW], o_vhat, o_el, o_er, o_et, o_eb, c3[SbTag +: TagW]}),
+    .valid_o, .q_o({v_o, vhat_o, e_left_o, e_right_o, e_top_o, e_bottom_o, tag_o}));
 endmodule
 
 `default_nettype wire

@@ -206,14 +206,9 @@ module rpu_top #(
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
     .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
     .ovf_o(sp_ovf), .tag_o(sp_tag));
-  wire [ItW-1:0]      s_it    = sp_tag[SpItO +: ItW];
-  wire [PrimW-1:0]    s_prim  = sp_tag[SpPrimO +: PrimW];
-  wire [SegP1W-1:0]   s_p1    = sp_tag[SpP1O +: SegP1W];
-  wire [SegDW-1:0]    s_d     = sp_tag[SpDO +: SegDW];
-  wire [SegL2W-1:0]   s_l2    = sp_tag[SpL2O +: SegL2W];
-  wire [GdW-1:0]      s_g1    = sp_tag[SpGO + GdW +: GdW];
-  wire [GdW-1:0]      s_g2    = sp_tag[SpGO +: GdW];
-  wire [EdgW-1:0]     s_edges = sp_tag[SpEdgesO +: EdgW];
+  // The sphere's tag (rpu_top_words.vh): {item, prim, p1, d, L², g1, g2, edges}.
+  wire [GdW-1:0] s_g1 = sp_tag[SpGO + GdW +: GdW];
+  wire [GdW-1:0] s_g2 = sp_tag[SpGO +: GdW];
 
   // ---- the K-step process ----
   wire             ip_ready_unused, ip_valid, ip_ovf;
@@ -222,12 +217,14 @@ module rpu_top #(
   rpu_ip #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N), .N1(N1),
            .Metric(Metric), .Unrolled(Unrolled), .FifoLog2(FifoLog2), .CtxW(IpCtxW)) u_ip (
     .clk_i, .rst_ni, .valid_i(sp_valid), .ready_o(ip_ready_unused), .a_i(sp_a), .ab_i(sp_ab),
-    .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(s_p1), .d_i(s_d), .l2_i(s_l2),
+    .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(sp_tag[SpP1O +: SegP1W]),
+    .d_i(sp_tag[SpDO +: SegDW]), .l2_i(sp_tag[SpL2O +: SegL2W]),
     .mode1_i(s_g1[GdModeO +: GdModeW]), .h1_i(s_g1[GdHO +: GdHW]), .a1_i(s_g1[GdAO +: GdAW]),
     .b1_i(s_g1[GdBO +: GdBW]), .u1_i(s_g1[GdUO +: GdUW]),
     .mode2_i(s_g2[GdModeO +: GdModeW]), .h2_i(s_g2[GdHO +: GdHW]), .a2_i(s_g2[GdAO +: GdAW]),
     .b2_i(s_g2[GdBO +: GdBW]), .u2_i(s_g2[GdUO +: GdUW]),
-    .ctx_i({s_it, s_prim, sp_pred1, sp_ovf, s_edges}),
+    .ctx_i({sp_tag[SpItO +: ItW], sp_tag[SpPrimO +: PrimW], sp_pred1, sp_ovf,
+            sp_tag[SpEdgesO +: EdgW]}),
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
   // The credit count keeps rpu_ip's own start FIFO (same depth) from ever filling: ready is 1.
   wire unused_md = ^ip_state[IsMdO +: 2 * MdW];
@@ -274,16 +271,9 @@ module rpu_top #(
     .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2}),
     .valid_o(rp_valid), .p0_valid_o(rp_p0_valid), .p0_o(rp_p0), .depth_o(rp_depth),
     .tag_o(rp_tag));
-  wire [ItW-1:0]      x_it   = rp_tag[RpItO +: ItW];
-  wire [PrimW-1:0]    x_prim = rp_tag[RpPrimO +: PrimW];
-  wire [SegP1W-1:0]   x_p1   = rp_tag[RpP1O +: SegP1W];
-  wire [SegDW-1:0]    x_d    = rp_tag[RpDO +: SegDW];
-  wire [SegL2W-1:0]   x_l2   = rp_tag[RpL2O +: SegL2W];
-  wire [SegInvMW-1:0] x_invm = rp_tag[RpInvMO +: SegInvMW];
-  wire [SegInvSW-1:0] x_invs = rp_tag[RpInvSO +: SegInvSW];
-  wire [GdW-1:0]      x_g1   = rp_tag[RpGO + GdW +: GdW];
-  wire [GdW-1:0]      x_g2   = rp_tag[RpGO +: GdW];
-  wire [SegR2W-1:0]   x_w02  = rp_tag[RpW02O +: SegR2W];
+  // The ray/plane unit's tag (rpu_top_words.vh): {item, prim, p1, d, L², 1/|d|, g1, g2, w0²}.
+  wire [GdW-1:0] x_g1 = rp_tag[RpGO + GdW +: GdW];
+  wire [GdW-1:0] x_g2 = rp_tag[RpGO +: GdW];
 
   wire             tx_valid, tx_covers, tx_ovf, tx_pr1_unused, tx_pr2_unused, tx_pr3_unused;
   wire [TW-1:0]    tx_t;
@@ -291,20 +281,21 @@ module rpu_top #(
   wire [TxTagW-1:0] tx_tag;
   rpu_texture #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .InvW(InvW),
                 .SqrtW(SqrtW), .TagW(TxTagW)) u_texture (
-    .clk_i, .rst_ni, .valid_i(rp_valid), .p0_i(rp_p0), .p1_i(x_p1), .d_i(x_d), .l2_i(x_l2),
-    .inv_m_i(x_invm), .inv_s_i(x_invs),
+    .clk_i, .rst_ni, .valid_i(rp_valid), .p0_i(rp_p0), .p1_i(rp_tag[RpP1O +: SegP1W]),
+    .d_i(rp_tag[RpDO +: SegDW]), .l2_i(rp_tag[RpL2O +: SegL2W]),
+    .inv_m_i(rp_tag[RpInvMO +: SegInvMW]), .inv_s_i(rp_tag[RpInvSO +: SegInvSW]),
     .mode1_i(x_g1[GdModeO +: GdModeW]), .h1_i(x_g1[GdHO +: GdHW]), .a1_i(x_g1[GdAO +: GdAW]),
     .b1_i(x_g1[GdBO +: GdBW]), .u1_i(x_g1[GdUO +: GdUW]),
     .mode2_i(x_g2[GdModeO +: GdModeW]), .h2_i(x_g2[GdHO +: GdHW]), .a2_i(x_g2[GdAO +: GdAW]),
-    .b2_i(x_g2[GdBO +: GdBW]), .u2_i(x_g2[GdUO +: GdUW]), .w0_2_i(x_w02),
-    .tag_i({x_it, x_prim, rp_p0_valid, rp_depth}),
+    .b2_i(x_g2[GdBO +: GdBW]), .u2_i(x_g2[GdUO +: GdUW]), .w0_2_i(rp_tag[RpW02O +: SegR2W]),
+    .tag_i({rp_tag[RpItO +: ItW], rp_tag[RpPrimO +: PrimW], rp_p0_valid, rp_depth}),
     .valid_o(tx_valid), .pr1_o(tx_pr1_unused), .pr2_o(tx_pr2_unused), .pr3_o(tx_pr3_unused),
     .covers_o(tx_covers), .t_o(tx_t), .x_o(tx_x), .ovf_o(tx_ovf), .tag_o(tx_tag));
   wire unused_tx = ^{tx_pr1_unused, tx_pr2_unused, tx_pr3_unused};
-  wire [ItW-1:0]    t_it    = tx_tag[TtItO +: ItW];
-  wire [PrimW-1:0]  t_prim  = tx_tag[TtPrimO +: PrimW];
-  wire              t_p0ok  = tx_tag[TtP0OkO];
-  wire [DepthW-1:0] t_depth = tx_tag[TtDepthO +: DepthW];
+  wire [ItW-1:0]    tx_it    = tx_tag[TtItO +: ItW];
+  wire [PrimW-1:0]  tx_prim  = tx_tag[TtPrimO +: PrimW];
+  wire              tx_p0ok  = tx_tag[TtP0OkO];
+  wire [DepthW-1:0] tx_depth = tx_tag[TtDepthO +: DepthW];
 
   // ---- output FIFOs: curve and texture results, merged in input order ----
   // Result record: {item, texture, primitive, pred_1, ovf, τ, t, X, hit, depth}.
@@ -312,29 +303,29 @@ module rpu_top #(
                           c_pred1 & cp_hit, c_pred1 ? cp_depth : {DepthW{1'b0}}};
   // As the model: a ray that misses the plane (or leaves the range) tests nothing: the result
   // is all zero; otherwise covers, t̂, X, the unit's overflow bit, and the ray/plane depth.
-  wire [ResW-1:0] tres = {t_it, 1'b1, t_prim, t_p0ok, t_p0ok & tx_ovf, {N{1'b0}},
-                        t_p0ok ? tx_t : {TW{1'b0}}, t_p0ok ? tx_x : {3*XW{1'b0}},
-                        t_p0ok & tx_covers, t_depth};
+  wire [ResW-1:0] tres = {tx_it, 1'b1, tx_prim, tx_p0ok, tx_p0ok & tx_ovf, {N{1'b0}},
+                        tx_p0ok ? tx_t : {TW{1'b0}}, tx_p0ok ? tx_x : {3*XW{1'b0}},
+                        tx_p0ok & tx_covers, tx_depth};
 
   // Three FIFOs in block RAM (rpu_fifo: registered read, data out of a register): curve
   // results, texture results, and one bit per accepted item saying which of the two holds its
   // result. The credit count bounds every FIFO's fill by Depth, so no write is ever refused.
-  wire              c_valid, t_valid, o_valid, head_tex;
-  wire [ResW-1:0]   c_data, t_data;
-  wire              c_wr_ready_unused, t_wr_ready_unused, o_wr_ready_unused;
-  wire              head_valid = o_valid && (head_tex ? t_valid : c_valid);
+  wire              c_valid, tx_fifo_valid, o_valid, head_tex;
+  wire [ResW-1:0]   c_data, tx_data;
+  wire              c_wr_ready_unused, tx_wr_ready_unused, o_wr_ready_unused;
+  wire              head_valid = o_valid && (head_tex ? tx_fifo_valid : c_valid);
   wire              rs_ready;
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_curve_fifo (
     .clk_i, .rst_ni, .wr_valid_i(cp_valid), .wr_ready_o(c_wr_ready_unused), .wr_data_i(cres),
     .rd_valid_o(c_valid), .rd_ready_i(pop && !head_tex), .rd_data_o(c_data));
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_texture_fifo (
-    .clk_i, .rst_ni, .wr_valid_i(tx_valid), .wr_ready_o(t_wr_ready_unused), .wr_data_i(tres),
-    .rd_valid_o(t_valid), .rd_ready_i(pop && head_tex), .rd_data_o(t_data));
+    .clk_i, .rst_ni, .wr_valid_i(tx_valid), .wr_ready_o(tx_wr_ready_unused), .wr_data_i(tres),
+    .rd_valid_o(tx_fifo_valid), .rd_ready_i(pop && head_tex), .rd_data_o(tx_data));
   rpu_fifo #(.Width(1), .Log2Depth(FifoLog2)) u_order_fifo (
     .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(o_wr_ready_unused),
     .wr_data_i(seg_q[SegTexO]), .rd_valid_o(o_valid), .rd_ready_i(pop), .rd_data_o(head_tex));
-  wire unused_fifo = ^{c_wr_ready_unused, t_wr_ready_unused, o_wr_ready_unused};
-  wire [ResW-1:0] head = head_tex ? t_data : c_data;
+  wire unused_fifo = ^{c_wr_ready_unused, tx_wr_ready_unused, o_wr_ready_unused};
+  wire [ResW-1:0] head = head_tex ? tx_data : c_data;
   // A result leaves when the consumer and the pixel resolve both take it.
   assign res_valid_o = head_valid && rs_ready;
   assign {res_last_o, res_id_o, res_i_o, res_j_o, res_seg_o, res_tex_o, res_prim_o, res_pred1_o,

@@ -1,12 +1,12 @@
-// rpu_indicator_delay: a D-cycle delay line for context that rides beside rpu_indicator's
-// arithmetic (a helper of rpu_indicator). The first D − 1 stages are plain registers (Yosys packs
+// rpu_delay: a D-cycle delay line for context that rides beside a unit's arithmetic (a shared
+// block, verified through the units that use it). The first D − 1 stages are plain registers (Yosys packs
 // them into shift-register LUTs); the last is loaded only with a valid item, a clock enable the
 // others lack, so it stays a flip-flop and the logic it feeds does not start at a slow SRL
 // output. d_o holds the last valid item's value while no item arrives. valid_i is the item's
 // valid bit at the line's input; its copy inside the line is not reset (it only gates data).
 `default_nettype none
 
-module rpu_indicator_delay #(
+module rpu_delay #(
   parameter integer W = 1,  // width (>= 1)
   parameter integer D = 1   // delay in cycles (>= 0; 0 is a wire)
 ) (
@@ -16,8 +16,8 @@ module rpu_indicator_delay #(
   output wire [W-1:0] d_o
 );
   initial begin
-    if (W < 1) $fatal(1, "rpu_indicator_delay: W must be >= 1");
-    if (D < 0) $fatal(1, "rpu_indicator_delay: D must be >= 0");
+    if (W < 1) $fatal(1, "rpu_delay: W must be >= 1");
+    if (D < 0) $fatal(1, "rpu_delay: D must be >= 0");
   end
 
   generate
