@@ -38,6 +38,7 @@ curve/rpu_ip_step.v
 curve/rpu_ip.v
 curve/rpu_capture.v
 // header: curve/rpu_guide_desc.vh
+// header: curve/rpu_guide_shape.vh
 // header: curve/rpu_ip_params.vh
 // header: curve/rpu_ip_derived.vh
 

@@ -18,3 +18,7 @@
 `define RPU_MD2W(coordw)     (2 * (coordw) + 8)     // |pr − X|² (dist_radicand_w)
 `define RPU_DEPTHW(coordw, edgefrac) ((coordw) + 4 + `RPU_EGW(edgefrac) + 2)  // depth c = (X − h)·W
 
+// One guide: its shape {mode, h, a, b} (rpu_guide_shape.vh) and the descriptor {shape, u}
+// (rpu_guide_desc.vh); the layout headers check their totals against these.
+`define RPU_GSW(coordw, tfrac) (2 + `RPU_HW(coordw) + (coordw) + (tfrac))
+`define RPU_GDW(coordw, tfrac, unitfrac) (`RPU_GSW(coordw, tfrac) + 3 * `RPU_UW(unitfrac))

@@ -31,18 +31,10 @@ module rpu_candidate #(
   input  wire [3*CoordW-1:0] p1_i,
   input  wire [3*DW-1:0]     d_i,
   input  wire [L2W-1:0]      l2_i,
-  input  wire [1:0]          mode1_i,    // guide of end 1: 0 straight, 1 arc, 2 flat
-  input  wire [HW-1:0]       h1_i,
+  input  wire [GdW-1:0]      g1_i,       // guide of end 1 (rpu_guide_desc.vh)
   input  wire [RadW-1:0]     hh1_i,      // h1², computed once per pair by the caller
-  input  wire [CoordW-1:0]   a1_i,
-  input  wire [TFrac-1:0]    b1_i,
-  input  wire [3*UW-1:0]     u1_i,
-  input  wire [1:0]          mode2_i,    // guide of end 2
-  input  wire [HW-1:0]       h2_i,
+  input  wire [GdW-1:0]      g2_i,       // guide of end 2
   input  wire [RadW-1:0]     hh2_i,      // h2²
-  input  wire [CoordW-1:0]   a2_i,
-  input  wire [TFrac-1:0]    b2_i,
-  input  wire [3*UW-1:0]     u2_i,
   input  wire [TagW-1:0]     tag_i,
   output wire                valid_o,
   output wire [TW-1:0]       t_o,
@@ -53,10 +45,13 @@ module rpu_candidate #(
   output wire [TagW-1:0]     tag_o
 );
   localparam integer GW = `RPU_PRW(CoordW);  // rpu_guide_pair's g
+`include "rpu_guide_desc.vh"
+  localparam integer GsW = `RPU_GSW(CoordW, TFrac);  // a guide's shape (rpu_guide_pair's g1_i)
 
   initial begin
     if (Metric != 0 && Metric != 1) $fatal(1, "rpu_candidate: Metric must be 0 or 1");
     if (N < 1 || N > 40) $fatal(1, "rpu_candidate: N must be in 1..40");
+    if (GdW != GdWords) $fatal(1, "rpu_candidate: GdW is derived; do not override it");
   end
 
 `include "rpu_mul_latency.vh"
@@ -66,30 +61,23 @@ module rpu_candidate #(
                           ? `RPU_MUL_LAT(TW, MW, 1) : `RPU_MUL_LAT(DW, MW, 1);
   wire [MW-1:0] m_s = {1'b0, m_i};
   // Everything the guides, the curve point and the end need rides in the t product's tag.
-  localparam integer InW = 3*CoordW + TW + 3*CoordW + 3*DW + L2W
-                         + 2 * (2 + HW + RadW + CoordW + TFrac + 3*UW) + TagW;
+  localparam integer InW = 3*CoordW + TW + 3*CoordW + 3*DW + L2W + 2 * (GdW + RadW) + TagW;
   wire          mt_valid;
   wire [TW+MW-1:0] bm;
   wire [InW-1:0]   in_m;
   rpu_mul #(.AW(TW), .BW(MW), .Signed(1), .TagW(InW), .Latency(LatM)) u_bm (
     .clk_i, .rst_ni, .valid_i, .a_i(beta_i), .b_i(m_s),
-    .tag_i({a_i, alpha_i, p1_i, d_i, l2_i, mode1_i, h1_i, hh1_i, a1_i, b1_i, u1_i,
-            mode2_i, h2_i, hh2_i, a2_i, b2_i, u2_i, tag_i}),
+    .tag_i({a_i, alpha_i, p1_i, d_i, l2_i, g1_i, hh1_i, g2_i, hh2_i, tag_i}),
     .valid_o(mt_valid), .p_o(bm), .tag_o(in_m));
   wire [3*CoordW-1:0] a_m;
   wire [TW-1:0]       alpha_m;
   wire [3*CoordW-1:0] p1_m;
   wire [3*DW-1:0]     d_m;
   wire [L2W-1:0]      l2_m;
-  wire [1:0]          mode1_m, mode2_m;
-  wire [HW-1:0]       h1_m, h2_m;
+  wire [GdW-1:0]      g1_m, g2_m;
   wire [RadW-1:0]     hh1_m, hh2_m;
-  wire [CoordW-1:0]   a1_m, a2_m;
-  wire [TFrac-1:0]    b1_m, b2_m;
-  wire [3*UW-1:0]     u1_m, u2_m;
   wire [TagW-1:0]     tag_m;
-  assign {a_m, alpha_m, p1_m, d_m, l2_m, mode1_m, h1_m, hh1_m, a1_m, b1_m, u1_m,
-          mode2_m, h2_m, hh2_m, a2_m, b2_m, u2_m, tag_m} = in_m;
+  assign {a_m, alpha_m, p1_m, d_m, l2_m, g1_m, hh1_m, g2_m, hh2_m, tag_m} = in_m;
 
   wire [3*PrW-1:0] pr_m;
   genvar c;
@@ -117,12 +105,12 @@ module rpu_candidate #(
 
   // ---- the two guides; the candidate's context (and the segment fields the curve point needs
   //      later) ride in the guide pair's tag ----
-  localparam integer SegW   = 3*CoordW + 3*DW + 6*UW;  // p1, d, u1, u2
+  localparam integer SegW   = 3*CoordW + 3*DW + 2*GdUW;  // p1, d, u1, u2
   localparam integer G1TagW = SegW + 3*PrW + TW + 1 + TagW;
   // The guide pair's tag, LSB first: {seg, pr, t, ovf, tag}; seg = {p1, d, u1, u2}.
   localparam integer GtPrO   = G1TagW - SegW - 3*PrW;
-  localparam integer SegDO   = 6*UW;
-  localparam integer GdInW   = 2 + HW + RadW + CoordW + TFrac;  // one guide's fields
+  localparam integer SegDO   = 2*GdUW;
+  localparam integer GdInW   = GsW + RadW;  // one guide's shape and h²
   wire                  valid_q1;
   wire [3*PrW-1:0]      pr_q1;
   wire [TW-1:0]         t_q1;
@@ -130,18 +118,14 @@ module rpu_candidate #(
   wire [TagW-1:0]       tag_q1;
   wire [SegW-1:0]       seg_q1;
   wire [L2W-1:0]        l2_q1;
-  wire [1:0]            mode1_q1, mode2_q1;
-  wire [HW-1:0]         h1_q1, h2_q1;
+  wire [GsW-1:0]        gs1_q1, gs2_q1;  // the guides' shapes
   wire [RadW-1:0]       hh1_q1, hh2_q1;
-  wire [CoordW-1:0]     a1_q1, a2_q1;
-  wire [TFrac-1:0]      b1_q1, b2_q1;
   rpu_stage #(.W(3*PrW + TW + 1 + TagW + SegW + L2W + 2*GdInW)) u_q1 (
     .clk_i, .rst_ni, .valid_i(mt_valid),
-    .d_i({pr_m, t_m, t_hi | t_lo, tag_m, p1_m, d_m, u1_m, u2_m, l2_m,
-          mode1_m, h1_m, hh1_m, a1_m, b1_m, mode2_m, h2_m, hh2_m, a2_m, b2_m}),
+    .d_i({pr_m, t_m, t_hi | t_lo, tag_m, p1_m, d_m, g1_m[GdUO +: GdUW], g2_m[GdUO +: GdUW], l2_m,
+          g1_m[GdShapeO +: GsW], hh1_m, g2_m[GdShapeO +: GsW], hh2_m}),
     .valid_o(valid_q1),
-    .q_o({pr_q1, t_q1, ovf_q1, tag_q1, seg_q1, l2_q1,
-          mode1_q1, h1_q1, hh1_q1, a1_q1, b1_q1, mode2_q1, h2_q1, hh2_q1, a2_q1, b2_q1}));
+    .q_o({pr_q1, t_q1, ovf_q1, tag_q1, seg_q1, l2_q1, gs1_q1, hh1_q1, gs2_q1, hh2_q1}));
   wire [G1TagW-1:0] g1_tag_out;
   wire              g1_valid, g_ovf;
   wire [GW-1:0]     g1, g2;
@@ -149,8 +133,7 @@ module rpu_candidate #(
   rpu_guide_pair #(.CoordW(CoordW), .TFrac(TFrac), .SqrtW(SqrtW), .HhIn(1), .TagW(G1TagW))
     u_guides (
     .clk_i, .rst_ni, .valid_i(valid_q1), .t_i(t_q1), .l2_i(l2_q1),
-    .mode1_i(mode1_q1), .h1_i(h1_q1), .hh1_i(hh1_q1), .a1_i(a1_q1), .b1_i(b1_q1),
-    .mode2_i(mode2_q1), .h2_i(h2_q1), .hh2_i(hh2_q1), .a2_i(a2_q1), .b2_i(b2_q1),
+    .g1_i(gs1_q1), .hh1_i(hh1_q1), .g2_i(gs2_q1), .hh2_i(hh2_q1),
     .tag_i({seg_q1, pr_q1, t_q1, ovf_q1, tag_q1}),
     .valid_o(g1_valid), .g1_o(g1), .g2_o(g2), .w_o(w_unused), .ovf_o(g_ovf),
     .tag_o(g1_tag_out));
@@ -158,8 +141,8 @@ module rpu_candidate #(
   wire [3*PrW-1:0] pr_g = g1_tag_out[GtPrO +: 3*PrW];
   wire [3*CoordW-1:0] p1_g = seg_g[SegW-1 -: 3*CoordW];
   wire [3*DW-1:0]     d_g  = seg_g[SegDO +: 3*DW];
-  wire [3*UW-1:0]     u1_g = seg_g[6*UW-1 -: 3*UW];
-  wire [3*UW-1:0]     u2_g = seg_g[3*UW-1:0];
+  wire [GdUW-1:0]     u1_g = seg_g[GdUW +: GdUW];
+  wire [GdUW-1:0]     u2_g = seg_g[0 +: GdUW];
   wire [TW-1:0]    t_g  = g1_tag_out[TW+1+TagW-1 -: TW];
   wire             ovf_g = g1_tag_out[TagW] | g_ovf;
   wire [TagW-1:0]  tag_g = g1_tag_out[TagW-1:0];

@@ -1,14 +1,20 @@
 // One guide descriptor (GuideDesc, ref/model/descriptors.h; formats: docs/fixed-point.md), packed
-// LSB first: {mode, h, a, b, u}. Included inside a module that defines CoordW, TFrac and
-// UnitFrac; each offset is defined from the previous one. GdW = 2 + (CW + 5) + CW + FT + 3(FU + 2).
-  localparam integer GdUO    = 0;                          // u_k, 3 × Q(2.FU), {z, y, x}
-  localparam integer GdUW    = 3 * `RPU_UW(UnitFrac);
-  localparam integer GdBO    = GdUO + GdUW;                // b = L²/(4h²), Q(0.FT) (flat)
-  localparam integer GdBW    = TFrac;
-  localparam integer GdAO    = GdBO + GdBW;                // a = L²/(2h), LSB (flat)
-  localparam integer GdAW    = CoordW;
-  localparam integer GdHO    = GdAO + GdAW;                // h, LSB (arc)
-  localparam integer GdHW    = `RPU_HW(CoordW);
-  localparam integer GdModeO = GdHO + GdHW;                // 0 straight, 1 arc, 2 flat
-  localparam integer GdModeW = 2;
-  localparam integer GdW     = GdModeO + GdModeW;
+// LSB first: {shape, u} = {mode, h, a, b, u}, the shape laid out by rpu_guide_shape.vh. The
+// guide travels as this one word between rpu_top, rpu_ip, rpu_ip_step, rpu_candidate and
+// rpu_texture; rpu_guide_pair takes its shape. Included inside a module that defines CoordW,
+// TFrac and UnitFrac. Its total, GdWords, equals `RPU_GDW (rpu_widths.vh), a module's derived
+// parameter GdW for its ports.
+`include "rpu_guide_shape.vh"
+  localparam integer GdUO     = 0;                         // u_k, 3 × Q(2.FU), {z, y, x}
+  localparam integer GdUW     = 3 * `RPU_UW(UnitFrac);
+  localparam integer GdShapeO = GdUO + GdUW;               // {mode, h, a, b}
+  localparam integer GdWords  = GdShapeO + GsWords;
+  // The shape's fields within the descriptor.
+  localparam integer GdBO     = GdShapeO + GsBO;
+  localparam integer GdBW     = GsBW;
+  localparam integer GdAO     = GdShapeO + GsAO;
+  localparam integer GdAW     = GsAW;
+  localparam integer GdHO     = GdShapeO + GsHO;
+  localparam integer GdHW     = GsHW;
+  localparam integer GdModeO  = GdShapeO + GsModeO;
+  localparam integer GdModeW  = GsModeW;

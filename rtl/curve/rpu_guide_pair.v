@@ -7,8 +7,8 @@
 //                 (sets ovf_o), then rpu_sqrt with its SqrtW pre-shift)
 //   flat     (2): g = aw − floor(aw·bw / 2^FT), aw = floor(a·w / 2^FT), bw = floor(b·w / 2^FT)
 //   straight (0, and the unused code 3): g = 0
-// h² is a per-segment constant: with HhIn = 1 the caller supplies it (hh1_i, hh2_i = h1_i²,
-// h2_i², computed once per pair; rpu_ip does), so a candidate evaluator multiplies no h; with
+// h² is a per-segment constant: with HhIn = 1 the caller supplies it (hh1_i, hh2_i = h1², h2²,
+// computed once per pair; rpu_ip does), so a candidate evaluator multiplies no h; with
 // HhIn = 0 the unit squares h itself in stage 2 and hh*_i are ignored.
 // The arc's h, or the finished flat/straight result, rides through each square root's side band
 // (one field), so every mode has the same fixed latency: Latency = 3 + Stages(rpu_sqrt) + 1
@@ -35,23 +35,20 @@ module rpu_guide_pair #(
   parameter integer AW   = CoordW,          // a = L²/(2h) < L/32, unsigned
   parameter integer L2W  = `RPU_L2W(CoordW),  // L2 = |d|² ≤ 3·2^(2CW), unsigned
   parameter integer RadW = `RPU_GRADW(CoordW), // h², the radicand: guide_radicand_w()
-  parameter integer GW   = `RPU_PRW(CoordW)       // g, signed (see above)
+  parameter integer GW   = `RPU_PRW(CoordW),      // g, signed (see above)
+  parameter integer GsW  = `RPU_GSW(CoordW, TFrac) // a guide's shape (rpu_guide_shape.vh)
 ) (
   input  wire                   clk_i,
   input  wire                   rst_ni,
   input  wire                   valid_i,
   input  wire [TW-1:0]          t_i,     // chord parameter, Q(3.FT) signed
   input  wire [L2W-1:0]         l2_i,    // |d|², LSB²
-  input  wire [1:0]             mode1_i, // 0 straight, 1 arc, 2 flat (3 acts as straight)
-  input  wire [HW-1:0]          h1_i,    // guide height, LSB (arc)
+  // A guide's shape {mode, h, a, b} (rpu_guide_shape.vh): mode 0 straight, 1 arc, 2 flat (3 acts
+  // as straight); h, LSB (arc); a = L²/(2h), LSB, and b = L²/(4h²), Q(0.FT) (flat).
+  input  wire [GsW-1:0]         g1_i,
   input  wire [RadW-1:0]        hh1_i,   // h1², LSB² (HhIn = 1)
-  input  wire [AW-1:0]          a1_i,    // L²/(2h), LSB (flat)
-  input  wire [TFrac-1:0]       b1_i,    // L²/(4h²), Q(0.FT) (flat)
-  input  wire [1:0]             mode2_i,
-  input  wire [HW-1:0]          h2_i,
+  input  wire [GsW-1:0]         g2_i,
   input  wire [RadW-1:0]        hh2_i,
-  input  wire [AW-1:0]          a2_i,
-  input  wire [TFrac-1:0]       b2_i,
   input  wire [TagW-1:0]        tag_i,
   output wire                   valid_o,
   output wire signed [GW-1:0]   g1_o,    // guide offsets, LSB
@@ -79,6 +76,7 @@ module rpu_guide_pair #(
   end
 
 `include "rpu_mul_latency.vh"
+`include "rpu_guide_shape.vh"
   // The multipliers' latencies. The flat path (aw and bw, then aw·bw) and the arc path (lw,
   // then one register for the radicand) meet at the roots: the shorter is padded (rpu_mul's
   // Latency parameter).
@@ -96,6 +94,7 @@ module rpu_guide_pair #(
   initial begin
     if (HhIn == 0 && LatHh > LatW + LatProd - 1)
       $fatal(1, "rpu_guide_pair: internal: h² arrives after the radicand sum");
+    if (GsW != GsWords) $fatal(1, "rpu_guide_pair: GsW is derived; do not override it");
   end
 
   // ---- w = floor(tc·(2^FT − tc) / 2^FT) ----
@@ -105,9 +104,11 @@ module rpu_guide_pair #(
   wire             t_big  = ~t_neg & (|t_i[TW-2:TFrac]);  // t ≥ 2^FT
   wire [TFrac-1:0] x      = (t_neg | t_big) ? {TFrac{1'b0}} : t_i[TFrac-1:0];
   wire [TFrac-1:0] x_comp = -x;
+  wire [HW-1:0]    h1     = g1_i[GsHO +: GsHW];
+  wire [HW-1:0]    h2     = g2_i[GsHO +: GsHW];
   // What the rest needs rides in the w multiplier's tag: {tag, L2, per guide {mode, h, a, b}};
   // h² (HhIn = 1) likewise.
-  localparam integer GIn   = 2 + HW + AW + TFrac;
+  localparam integer GIn   = GsW;
   localparam integer HhTW  = HhIn != 0 ? 2 * RadW : 1;
   // w's tag, LSB first: {tag, L2, guide 1, guide 2, h²}.
   localparam integer WtG1O  = HhTW + GIn;
@@ -118,6 +119,7 @@ module rpu_guide_pair #(
   generate
     if (HhIn != 0) begin : g_hh_tag
       assign hh_in = {hh1_i, hh2_i};
+      wire unused_h = ^{h1, h2};  // h² comes in: h is only read from the shape's tag
     end else begin : g_no_hh_tag
       assign hh_in = 1'b0;
     end
@@ -127,7 +129,7 @@ module rpu_guide_pair #(
   wire [WTagW-1:0]   w_tag;
   rpu_mul #(.AW(TFrac), .BW(TFrac), .Signed(0), .TagW(WTagW)) u_w (
     .clk_i, .rst_ni, .valid_i, .a_i(x), .b_i(x_comp),
-    .tag_i({tag_i, l2_i, mode1_i, h1_i, a1_i, b1_i, mode2_i, h2_i, a2_i, b2_i, hh_in}),
+    .tag_i({tag_i, l2_i, g1_i, g2_i, hh_in}),
     .valid_o(w_valid), .p_o(ww), .tag_o(w_tag));
   // ww ≤ 2^(2FT−2): bit 2FT−1 is zero; the low FT bits are the floor's dropped fraction.
   wire [WW-1:0]   w      = ww[2*TFrac-2:TFrac];
@@ -182,7 +184,7 @@ module rpu_guide_pair #(
         wire            hh_v_unused, hh_t_unused;
         // h enters with the operand and leaves LatW + LatProd − 1 cycles later, with lw.
         rpu_mul #(.AW(HW), .BW(HW), .Signed(0), .TagW(1), .Latency(LatW + LatProd - 1)) u_hh (
-          .clk_i, .rst_ni, .valid_i, .a_i(k == 0 ? h1_i : h2_i), .b_i(k == 0 ? h1_i : h2_i),
+          .clk_i, .rst_ni, .valid_i, .a_i(k == 0 ? h1 : h2), .b_i(k == 0 ? h1 : h2),
           .tag_i(1'b0), .valid_o(hh_v_unused), .p_o(hh_p), .tag_o(hh_t_unused));
         assign hh_sum[k] = hh_p;
         wire unused_hh = ^{hh_v_unused, hh_t_unused};

@@ -37,16 +37,8 @@ module rpu_ip #(
   input  wire [3*CoordW-1:0] p1_i,
   input  wire [3*DW-1:0]     d_i,
   input  wire [L2W-1:0]      l2_i,
-  input  wire [1:0]          mode1_i,
-  input  wire [HW-1:0]       h1_i,
-  input  wire [CoordW-1:0]   a1_i,
-  input  wire [TFrac-1:0]    b1_i,
-  input  wire [3*UW-1:0]     u1_i,
-  input  wire [1:0]          mode2_i,
-  input  wire [HW-1:0]       h2_i,
-  input  wire [CoordW-1:0]   a2_i,
-  input  wire [TFrac-1:0]    b2_i,
-  input  wire [3*UW-1:0]     u2_i,
+  input  wire [GdW-1:0]      g1_i,       // guide of end 1 (rpu_guide_desc.vh)
+  input  wire [GdW-1:0]      g2_i,       // guide of end 2
   input  wire [CtxW-1:0]     ctx_i,
   output wire                valid_o,
   output wire [StW-1:0]      state_o,    // {τ_K, lo.t, lo.X, lo.md, hi.md}
@@ -54,72 +46,49 @@ module rpu_ip #(
   output wire [CtxW-1:0]     ctx_o
 );
   localparam integer KW = 8;
+`include "rpu_guide_desc.vh"
+  localparam integer HW = GdHW;  // guide height h
   // Everything a step needs, as one bundle {pair, caller's context, overflow}; the pair's fields
-  // from the top: A, AB, α, β, p1, d, L², then per guide {mode, h, h², a, b, u}.
-  localparam integer GdW   = 2 + HW + RadW + CoordW + TFrac + 3*UW;
-  localparam integer PairW = 3*CoordW + 3*DW + 2*TW + 3*CoordW + 3*DW + L2W + 2 * GdW;
+  // from the top: A, AB, α, β, p1, d, L², then per guide its descriptor and h², {g, h²}.
+  localparam integer GhW   = GdW + RadW;
+  localparam integer PairW = 3*CoordW + 3*DW + 2*TW + 3*CoordW + 3*DW + L2W + 2 * GhW;
   localparam integer BunW  = PairW + CtxW + 1;
   // Field offsets in a bundle (LSB of each field), from the overflow bit up.
   localparam integer OffG2    = CtxW + 1;
-  localparam integer OffG1    = OffG2 + GdW;
-  localparam integer OffL2    = OffG1 + GdW;
+  localparam integer OffG1    = OffG2 + GhW;
+  localparam integer OffL2    = OffG1 + GhW;
   localparam integer OffD     = OffL2 + L2W;
   localparam integer OffP1    = OffD + 3*DW;
   localparam integer OffBeta  = OffP1 + 3*CoordW;
   localparam integer OffAlpha = OffBeta + TW;
   localparam integer OffAB    = OffAlpha + TW;
   localparam integer OffA     = OffAB + 3*DW;
-  // Within a guide field: {mode, h, h², a, b, u}.
-  localparam integer GOffU    = 0;
-  localparam integer GOffB    = GOffU + 3*UW;
-  localparam integer GOffA    = GOffB + TFrac;
-  localparam integer GOffHh   = GOffA + CoordW;
-  localparam integer GOffH    = GOffHh + RadW;
-  localparam integer GOffMode = GOffH + HW;
 
   initial begin
     if (K > 255) $fatal(1, "rpu_ip: N/N1 must be below 256");
     if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_ip: FifoLog2 must be in 2..12");
     if (OffA + 3*CoordW != BunW) $fatal(1, "rpu_ip: internal: bundle offsets");
+    if (GdW != GdWords) $fatal(1, "rpu_ip: GdW is derived; do not override it");
   end
 
-  // ---- input stage: h1², h2² (exact, RadW = 2·HW bits: two rpu_mul), the pair and the
-  //      caller's context riding in the first one's tag ----
+  // ---- input stage: h1², h2² (exact, RadW = 2·HW bits: one rpu_mul_vec), the pair and the
+  //      caller's context riding in its tag ----
   localparam integer InTagW = PairW - 2 * RadW + CtxW;
-  wire               valid_0q, hh2_v_unused, hh2_t_unused;
-  wire [RadW-1:0]    hh1, hh2;
-  wire [InTagW-1:0]  in_0q;
-  rpu_mul #(.AW(HW), .BW(HW), .Signed(0), .TagW(InTagW)) u_hh1 (
-    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .a_i(h1_i), .b_i(h1_i),
-    .tag_i({a_i, ab_i, alpha_i, beta_i, p1_i, d_i, l2_i, mode1_i, h1_i, a1_i, b1_i, u1_i,
-            mode2_i, h2_i, a2_i, b2_i, u2_i, ctx_i}),
-    .valid_o(valid_0q), .p_o(hh1), .tag_o(in_0q));
-  rpu_mul #(.AW(HW), .BW(HW), .Signed(0), .TagW(1)) u_hh2 (
-    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .a_i(h2_i), .b_i(h2_i), .tag_i(1'b0),
-    .valid_o(hh2_v_unused), .p_o(hh2), .tag_o(hh2_t_unused));
-  wire unused_hh = ^{hh2_v_unused, hh2_t_unused};
-  // Re-insert h² after each h: {.., mode1, h1, h1², a1, b1, u1, mode2, h2, h2², a2, b2, u2}.
-  localparam integer G2TW = CoordW + TFrac + 3*UW;         // a, b, u of a guide
-  localparam integer HeadW = PairW - 2 * GdW;              // A .. L²
-  // in_0q, LSB first: {ctx, g2 (a, b, u), mode2 h2, g1 (a, b, u), mode1 h1, head}.
-  localparam integer InG1O  = CtxW + G2TW + 2 + HW;
-  localparam integer InMh1O = InG1O + G2TW;
-  wire [HeadW-1:0]  in_head = in_0q[InTagW-1 -: HeadW];
-  wire [1+HW:0]     in_mh1  = in_0q[InMh1O +: 2 + HW];
-  wire [G2TW-1:0]   in_g1   = in_0q[InG1O +: G2TW];
-  wire [1+HW:0]     in_mh2  = in_0q[CtxW+G2TW+2+HW-1 -: 2 + HW];
-  wire [G2TW-1:0]   in_g2   = in_0q[CtxW+G2TW-1 -: G2TW];
-  wire [PairW-1:0]  pair_0q = {in_head, in_mh1, hh1, in_g1, in_mh2, hh2, in_g2};
+  localparam integer HeadW  = PairW - 2 * GhW;             // A .. L²
+  wire               valid_0q;
+  wire [2*RadW-1:0]  hh;                                   // {h2², h1²}
+  wire [InTagW-1:0]  in_0q;                                // {head, g1, g2, ctx}
+  rpu_mul_vec #(.Count(2), .AW(HW), .BW(HW), .Signed(0), .TagW(InTagW)) u_hh (
+    .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .a_i({g2_i[GdHO +: HW], g1_i[GdHO +: HW]}),
+    .b_i({g2_i[GdHO +: HW], g1_i[GdHO +: HW]}),
+    .tag_i({a_i, ab_i, alpha_i, beta_i, p1_i, d_i, l2_i, g1_i, g2_i, ctx_i}),
+    .valid_o(valid_0q), .p_o(hh), .tag_o(in_0q));
+  // h² after each guide: {head, g1, h1², g2, h2²}.
+  wire [PairW-1:0]  pair_0q = {in_0q[InTagW-1 -: HeadW], in_0q[CtxW + GdW +: GdW], hh[0 +: RadW],
+                               in_0q[CtxW +: GdW], hh[RadW +: RadW]};
   wire [CtxW-1:0]   ctx_0q  = in_0q[CtxW-1:0];
 
   // Unpacking a bundle {pair, ctx, ovf} into a step's or a candidate's ports.
-  `define RPU_IP_GUIDE_PORTS(B, G, N) \
-    .mode``N``_i(B[(G) + GOffMode +: 2]), \
-    .h``N``_i(B[(G) + GOffH +: HW]), \
-    .hh``N``_i(B[(G) + GOffHh +: RadW]), \
-    .a``N``_i(B[(G) + GOffA +: CoordW]), \
-    .b``N``_i(B[(G) + GOffB +: TFrac]), \
-    .u``N``_i(B[(G) + GOffU +: 3*UW])
   `define RPU_IP_STEP_PORTS(B) \
     .a_i(B[OffA +: 3*CoordW]), \
     .ab_i(B[OffAB +: 3*DW]), \
@@ -128,8 +97,10 @@ module rpu_ip #(
     .p1_i(B[OffP1 +: 3*CoordW]), \
     .d_i(B[OffD +: 3*DW]), \
     .l2_i(B[OffL2 +: L2W]), \
-    `RPU_IP_GUIDE_PORTS(B, OffG1, 1), \
-    `RPU_IP_GUIDE_PORTS(B, OffG2, 2)
+    .g1_i(B[OffG1 + RadW +: GdW]), \
+    .hh1_i(B[OffG1 +: RadW]), \
+    .g2_i(B[OffG2 + RadW +: GdW]), \
+    .hh2_i(B[OffG2 +: RadW])
 
   wire [BunW-1:0] bun_0 = {pair_0q, ctx_0q, 1'b0};
 
@@ -239,7 +210,6 @@ module rpu_ip #(
     end
   endgenerate
   `undef RPU_IP_STEP_PORTS
-  `undef RPU_IP_GUIDE_PORTS
 endmodule
 
 `default_nettype wire

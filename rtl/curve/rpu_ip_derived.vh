@@ -3,8 +3,7 @@
 // (do not override)" line. No include guard: each module's list includes it once.
   parameter integer TW   = `RPU_TW(TFrac),      // t, α, β: Q(3.FT)
   parameter integer DW   = `RPU_DW(CoordW),     // d, AB
-  parameter integer UW   = `RPU_UW(UnitFrac),   // u: Q(2.FU)
-  parameter integer HW   = `RPU_HW(CoordW),     // guide height h
   parameter integer L2W  = `RPU_L2W(CoordW),    // L²
   parameter integer RadW = `RPU_GRADW(CoordW),  // h² (guide_radicand_w)
   parameter integer XW   = `RPU_XW(CoordW),     // X
+  parameter integer GdW  = `RPU_GDW(CoordW, TFrac, UnitFrac),  // a guide (rpu_guide_desc.vh)

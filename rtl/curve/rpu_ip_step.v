@@ -36,18 +36,10 @@ module rpu_ip_step #(
   input  wire [3*CoordW-1:0] p1_i,
   input  wire [3*DW-1:0]     d_i,
   input  wire [L2W-1:0]      l2_i,
-  input  wire [1:0]          mode1_i,
-  input  wire [HW-1:0]       h1_i,
+  input  wire [GdW-1:0]      g1_i,       // guide of end 1 (rpu_guide_desc.vh)
   input  wire [RadW-1:0]     hh1_i,      // h1² (the caller computes it once per pair)
-  input  wire [CoordW-1:0]   a1_i,
-  input  wire [TFrac-1:0]    b1_i,
-  input  wire [3*UW-1:0]     u1_i,
-  input  wire [1:0]          mode2_i,
-  input  wire [HW-1:0]       h2_i,
+  input  wire [GdW-1:0]      g2_i,       // guide of end 2
   input  wire [RadW-1:0]     hh2_i,      // h2²
-  input  wire [CoordW-1:0]   a2_i,
-  input  wire [TFrac-1:0]    b2_i,
-  input  wire [3*UW-1:0]     u2_i,
   input  wire [CtxW-1:0]     ctx_i,      // passed through unchanged (the caller's descriptors)
   input  wire [TagW-1:0]     tag_i,
   output wire                valid_o,
@@ -91,8 +83,7 @@ module rpu_ip_step #(
         rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                         .Metric(Metric), .TagW(SbW)) u_cand (
           .clk_i, .rst_ni, .valid_i, .m_i(m), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i, .d_i, .l2_i,
-          .mode1_i, .h1_i, .hh1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .hh2_i, .a2_i, .b2_i,
-          .u2_i,
+          .g1_i, .hh1_i, .g2_i, .hh2_i,
           .tag_i(sb_in), .valid_o(c_valid[j-1]), .t_o(c_t[(j-1)*TW +: TW]),
           .x_o(c_x[(j-1)*3*XW +: 3*XW]), .pr_o(pr_unused), .md_o(c_md[(j-1)*MdW +: MdW]),
           .ovf_o(c_ovf[j-1]), .tag_o(sb_out));
@@ -101,8 +92,7 @@ module rpu_ip_step #(
         rpu_candidate #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                         .Metric(Metric), .TagW(1)) u_cand (
           .clk_i, .rst_ni, .valid_i, .m_i(m), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i, .d_i, .l2_i,
-          .mode1_i, .h1_i, .hh1_i, .a1_i, .b1_i, .u1_i, .mode2_i, .h2_i, .hh2_i, .a2_i, .b2_i,
-          .u2_i,
+          .g1_i, .hh1_i, .g2_i, .hh2_i,
           .tag_i(1'b0), .valid_o(c_valid[j-1]), .t_o(c_t[(j-1)*TW +: TW]),
           .x_o(c_x[(j-1)*3*XW +: 3*XW]), .pr_o(pr_unused), .md_o(c_md[(j-1)*MdW +: MdW]),
           .ovf_o(c_ovf[j-1]), .tag_o(tag_unused));

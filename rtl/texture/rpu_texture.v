@@ -46,7 +46,7 @@ module rpu_texture #(
   parameter integer TW   = `RPU_TW(TFrac),       // t̂: Q(3.FT)
   parameter integer DW   = `RPU_DW(CoordW),      // d = p2 − p1
   parameter integer UW   = `RPU_UW(UnitFrac),    // u: Q(2.FU)
-  parameter integer HW   = `RPU_HW(CoordW),      // guide height h (rpu_guide_pair)
+  parameter integer GdW  = `RPU_GDW(CoordW, TFrac, UnitFrac),  // a guide (rpu_guide_desc.vh)
   parameter integer L2W  = `RPU_L2W(CoordW),  // L² = |d|²
   parameter integer XW   = `RPU_XW(CoordW),      // X (rpu_curve_point)
   parameter integer W02W = `RPU_R2W(CoordW)   // w0_2, unsigned
@@ -61,16 +61,8 @@ module rpu_texture #(
   input  wire [L2W-1:0]      l2_i,      // |d|², LSB², unsigned
   input  wire [InvW-1:0]     inv_m_i,   // 1/L² = inv_m · 2^-inv_s
   input  wire [6:0]          inv_s_i,
-  input  wire [1:0]          mode1_i,   // guide of end 1: 0 straight, 1 arc, 2 flat
-  input  wire [HW-1:0]       h1_i,
-  input  wire [CoordW-1:0]   a1_i,
-  input  wire [TFrac-1:0]    b1_i,
-  input  wire [3*UW-1:0]     u1_i,
-  input  wire [1:0]          mode2_i,   // guide of end 2
-  input  wire [HW-1:0]       h2_i,
-  input  wire [CoordW-1:0]   a2_i,
-  input  wire [TFrac-1:0]    b2_i,
-  input  wire [3*UW-1:0]     u2_i,
+  input  wire [GdW-1:0]      g1_i,      // guide of end 1 (rpu_guide_desc.vh)
+  input  wire [GdW-1:0]      g2_i,      // guide of end 2
   input  wire [W02W-1:0]     w0_2_i,    // texture half-width², LSB², unsigned
   input  wire [TagW-1:0]     tag_i,
   output wire                valid_o,
@@ -98,7 +90,8 @@ module rpu_texture #(
   localparam integer EPW  = 2 * EW;          // e_k²
   localparam integer ESW  = 2 * EW + 2;      // |e|² with w0_2, signed compare
   localparam integer GW   = CW + 2;          // rpu_guide_pair's g
-  localparam integer GdW  = 2 + HW + CW + TFrac;  // one guide's {mode, h, a, b}
+`include "rpu_guide_desc.vh"
+  localparam integer GsW  = GsWords;          // one guide's shape {mode, h, a, b}
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_texture: CoordW must be in 12..40");
@@ -107,7 +100,7 @@ module rpu_texture #(
     if (UnitFrac < 8 || UnitFrac > 40) $fatal(1, "rpu_texture: UnitFrac must be in 8..40");
     if (InvW < 8 || InvW > 40) $fatal(1, "rpu_texture: InvW must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_texture: TagW must be >= 1");
-    if (TW != `RPU_TW(TFrac) || DW != `RPU_DW(CoordW) || UW != `RPU_UW(UnitFrac) || HW != `RPU_HW(CoordW) ||
+    if (TW != `RPU_TW(TFrac) || DW != `RPU_DW(CoordW) || UW != `RPU_UW(UnitFrac) || GdW != GdWords ||
         L2W != `RPU_L2W(CoordW) || XW != `RPU_XW(CoordW) || W02W != `RPU_R2W(CoordW))
       $fatal(1, "rpu_texture: derived parameters must not be overridden");
   end
@@ -133,7 +126,7 @@ module rpu_texture #(
   // Stage 1: r1 = p0 − p1, r2 = p0 − p1 − d (exact).
   // ---------------------------------------------------------------------------------------------
   // The segment context used after the front end: {w0_2, p0, p1, d, u1, u2, l2, guide 1, guide 2}.
-  localparam integer CtxW = W02W + 6 * CW + 3 * DW + 6 * UW + L2W + 2 * GdW;
+  localparam integer CtxW = W02W + 6 * CW + 3 * DW + 6 * UW + L2W + 2 * GsW;
   wire [3*R1W-1:0] r1v;
   wire [3*R2W-1:0] r2v;
   generate
@@ -158,10 +151,10 @@ module rpu_texture #(
   wire              s1_valid_q;
   rpu_stage #(.W(3*R1W + 3*R2W + CtxW + InvW + 7 + TagW)) u_s1 (
     .clk_i, .rst_ni, .valid_i,
-    .d_i({r1v, r2v, w0_2_i, p0_i, p1_i, d_i, u1_i, u2_i, l2_i,
-          mode1_i, h1_i, a1_i, b1_i, mode2_i, h2_i, a2_i, b2_i, inv_s_i, inv_m_i, tag_i}),
+    .d_i({r1v, r2v, w0_2_i, p0_i, p1_i, d_i, g1_i[GdUO +: GdUW], g2_i[GdUO +: GdUW], l2_i,
+          g1_i[GdShapeO +: GsW], g2_i[GdShapeO +: GsW], inv_s_i, inv_m_i, tag_i}),
     .valid_o(s1_valid_q), .q_o({s1_r1_q, s1_r2_q, s1_ctx_q, s1_inv_q, s1_tag_q}));
-  wire [3*DW-1:0] s1_d = s1_ctx_q[6*UW + L2W + 2*GdW +: 3*DW];
+  wire [3*DW-1:0] s1_d = s1_ctx_q[6*UW + L2W + 2*GsW +: 3*DW];
 
   // ---------------------------------------------------------------------------------------------
   // The products (exact): r1_k·d_k, r2_k·d_k, r1_k², r2_k², all padded to LF cycles; w0_2 and L2
@@ -177,7 +170,7 @@ module rpu_texture #(
   wire f2_valid, s1_valid, s2_valid, f2_tag, s1_tag, s2_tag;
   rpu_mul_vec #(.Count(3), .AW(R1W), .BW(DW), .Signed(1), .TagW(W02W + L2W), .Latency(LF)) u_f1 (
     .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_r1_q), .b_i(s1_d),
-    .tag_i({s1_ctx_q[CtxW-1 -: W02W], s1_ctx_q[2*GdW +: L2W]}),
+    .tag_i({s1_ctx_q[CtxW-1 -: W02W], s1_ctx_q[2*GsW +: L2W]}),
     .valid_o(m_valid), .p_o(f1p), .tag_o(m_tag));
   rpu_mul_vec #(.Count(3), .AW(DW), .BW(R2W), .Signed(1), .TagW(1), .Latency(LF)) u_f2 (
     .clk_i, .rst_ni, .valid_i(s1_valid_q), .a_i(s1_d), .b_i(s1_r2_q), .tag_i(1'b0),
@@ -194,7 +187,7 @@ module rpu_texture #(
   // chord's operand inv and the guide operands {L2, guide 1, guide 2} for LF + 2 stages to the
   // chord (whose tag carries the guide operands on, ending in a flip-flop), the rest
   // {tag, w0_2, p0, p1, d, u1, u2} for LF + 2 + the chord's latency, straight to the guides' tag.
-  localparam integer LoW = L2W + 2 * GdW;
+  localparam integer LoW = L2W + 2 * GsW;
   localparam integer HiW = CtxW - LoW;
   localparam integer DlW = InvW + 7 + LoW;      // {inv, ctx_lo}
   localparam integer Dl  = LF + 2;
@@ -296,11 +289,8 @@ module rpu_texture #(
   wire [3*DW-1:0]     ch_d;
   wire [3*UW-1:0]     ch_u1, ch_u2;
   wire [L2W-1:0]      ch_l2;
-  wire [1:0]          ch_mode1, ch_mode2;
-  wire [HW-1:0]       ch_h1, ch_h2;
-  wire [CW-1:0]       ch_a1, ch_a2;
-  wire [TFrac-1:0]    ch_b1, ch_b2;
-  assign {ch_pr1, ch_pr2, ch_l2, ch_mode1, ch_h1, ch_a1, ch_b1, ch_mode2, ch_h2, ch_a2, ch_b2} =
+  wire [GsW-1:0]      ch_g1, ch_g2;  // the guides' shapes
+  assign {ch_pr1, ch_pr2, ch_l2, ch_g1, ch_g2} =
       ch_tag_out;
   assign {ch_tag, ch_w02, ch_p0, ch_p1, ch_d, ch_u1, ch_u2} = d2_out;
 
@@ -320,16 +310,10 @@ module rpu_texture #(
     .valid_i(ch_valid),
     .t_i    (ch_t),
     .l2_i   (ch_l2),
-    .mode1_i(ch_mode1),
-    .h1_i   (ch_h1),
+    .g1_i   (ch_g1),
     .hh1_i  ({RadW{1'b0}}),
-    .a1_i   (ch_a1),
-    .b1_i   (ch_b1),
-    .mode2_i(ch_mode2),
-    .h2_i   (ch_h2),
+    .g2_i   (ch_g2),
     .hh2_i  ({RadW{1'b0}}),
-    .a2_i   (ch_a2),
-    .b2_i   (ch_b2),
     .tag_i  ({ch_tag, ch_pr1, ch_pr2, ch_w02, ch_p0, ch_p1, ch_d, ch_u1, ch_u2, ch_t, ch_ovf}),
     .valid_o(g1_valid),
     .g1_o   (g1),

@@ -93,6 +93,7 @@ module rpu_top #(
   localparam integer EoW  = EgW + IdxW + 1;           // rpu_ray_gen's edge outputs
   localparam integer MdW  = Metric == 0 ? CoordW + 4 : `RPU_MD2W(CoordW);
 `include "rpu_guide_desc.vh"
+  localparam integer GdW = GdWords;  // one guide (the segment descriptor holds two)
 `include "rpu_seg_desc.vh"
 `include "rpu_cam_desc.vh"
 `include "rpu_top_words.vh"
@@ -206,9 +207,6 @@ module rpu_top #(
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
     .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
     .ovf_o(sp_ovf), .tag_o(sp_tag));
-  // The sphere's tag (rpu_top_words.vh): {item, prim, p1, d, L², g1, g2, edges}.
-  wire [GdW-1:0] s_g1 = sp_tag[SpGO + GdW +: GdW];
-  wire [GdW-1:0] s_g2 = sp_tag[SpGO +: GdW];
 
   // ---- the K-step process ----
   wire             ip_ready_unused, ip_valid, ip_ovf;
@@ -219,10 +217,7 @@ module rpu_top #(
     .clk_i, .rst_ni, .valid_i(sp_valid), .ready_o(ip_ready_unused), .a_i(sp_a), .ab_i(sp_ab),
     .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(sp_tag[SpP1O +: SegP1W]),
     .d_i(sp_tag[SpDO +: SegDW]), .l2_i(sp_tag[SpL2O +: SegL2W]),
-    .mode1_i(s_g1[GdModeO +: GdModeW]), .h1_i(s_g1[GdHO +: GdHW]), .a1_i(s_g1[GdAO +: GdAW]),
-    .b1_i(s_g1[GdBO +: GdBW]), .u1_i(s_g1[GdUO +: GdUW]),
-    .mode2_i(s_g2[GdModeO +: GdModeW]), .h2_i(s_g2[GdHO +: GdHW]), .a2_i(s_g2[GdAO +: GdAW]),
-    .b2_i(s_g2[GdBO +: GdBW]), .u2_i(s_g2[GdUO +: GdUW]),
+    .g1_i(sp_tag[SpGO + GdW +: GdW]), .g2_i(sp_tag[SpGO +: GdW]),
     .ctx_i({sp_tag[SpItO +: ItW], sp_tag[SpPrimO +: PrimW], sp_pred1, sp_ovf,
             sp_tag[SpEdgesO +: EdgW]}),
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
@@ -271,9 +266,6 @@ module rpu_top #(
     .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2}),
     .valid_o(rp_valid), .p0_valid_o(rp_p0_valid), .p0_o(rp_p0), .depth_o(rp_depth),
     .tag_o(rp_tag));
-  // The ray/plane unit's tag (rpu_top_words.vh): {item, prim, p1, d, L², 1/|d|, g1, g2, w0²}.
-  wire [GdW-1:0] x_g1 = rp_tag[RpGO + GdW +: GdW];
-  wire [GdW-1:0] x_g2 = rp_tag[RpGO +: GdW];
 
   wire             tx_valid, tx_covers, tx_ovf, tx_pr1_unused, tx_pr2_unused, tx_pr3_unused;
   wire [TW-1:0]    tx_t;
@@ -284,10 +276,8 @@ module rpu_top #(
     .clk_i, .rst_ni, .valid_i(rp_valid), .p0_i(rp_p0), .p1_i(rp_tag[RpP1O +: SegP1W]),
     .d_i(rp_tag[RpDO +: SegDW]), .l2_i(rp_tag[RpL2O +: SegL2W]),
     .inv_m_i(rp_tag[RpInvMO +: SegInvMW]), .inv_s_i(rp_tag[RpInvSO +: SegInvSW]),
-    .mode1_i(x_g1[GdModeO +: GdModeW]), .h1_i(x_g1[GdHO +: GdHW]), .a1_i(x_g1[GdAO +: GdAW]),
-    .b1_i(x_g1[GdBO +: GdBW]), .u1_i(x_g1[GdUO +: GdUW]),
-    .mode2_i(x_g2[GdModeO +: GdModeW]), .h2_i(x_g2[GdHO +: GdHW]), .a2_i(x_g2[GdAO +: GdAW]),
-    .b2_i(x_g2[GdBO +: GdBW]), .u2_i(x_g2[GdUO +: GdUW]), .w0_2_i(rp_tag[RpW02O +: SegR2W]),
+    .g1_i(rp_tag[RpGO + GdW +: GdW]), .g2_i(rp_tag[RpGO +: GdW]),
+    .w0_2_i(rp_tag[RpW02O +: SegR2W]),
     .tag_i({rp_tag[RpItO +: ItW], rp_tag[RpPrimO +: PrimW], rp_p0_valid, rp_depth}),
     .valid_o(tx_valid), .pr1_o(tx_pr1_unused), .pr2_o(tx_pr2_unused), .pr3_o(tx_pr3_unused),
     .covers_o(tx_covers), .t_o(tx_t), .x_o(tx_x), .ovf_o(tx_ovf), .tag_o(tx_tag));

@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "common/parallel.h"
+#include "guide_word.h"
 #include "model/units.h"
 #include "scene/classification_grid.h"
 #include "scene/screen_bins.h"
@@ -65,13 +66,7 @@ Bits pack_segment(const ref::HwParams& p, const ref::SegmentDesc& s, bool textur
   d.add(s.L2, w.L2W);
   d.add(s.inv_m, p.inv_w);
   d.add(s.inv_s, 7);
-  for (const ref::GuideDesc& g : s.guide) {
-    d.add(static_cast<int>(g.mode), 2);
-    d.add(g.h, w.HW);
-    d.add(g.a, w.CW);
-    d.add(g.b, p.t_frac);
-    d.add3(g.u.x, g.u.y, g.u.z, w.UW);
-  }
+  for (const ref::GuideDesc& g : s.guide) add_guide(d, p, g);
   return d.bits();
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "tb_base.h"
+#include "tb_guide.h"
 
 namespace rpu::sim {
 
@@ -78,16 +79,14 @@ inline bool sample_pred1_pair(const scene::CompiledScene& sc, const ref::ModelSc
 template <class Top>
 void pair_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::SegmentDesc& s,
                  const ref::SearchInterval& si) {
-  const int CW = p.coord_w, DW = CW + 1, TW = p.t_w(), UW = p.unit_w(), FT = p.t_frac;
+  const int CW = p.coord_w, DW = CW + 1, TW = p.t_w();
   in.vec("A", top.a_i, si.A, CW).vec("AB", top.ab_i, si.AB, DW);
   in("alpha", top.alpha_i, si.alpha, TW)("beta", top.beta_i, si.beta, TW);
   in.vec("p1", top.p1_i, s.p1, CW).vec("d", top.d_i, s.d, DW)("L2", top.l2_i, s.L2, 2 * CW + 3);
   const ref::GuideDesc& g1 = s.guide[0];
   const ref::GuideDesc& g2 = s.guide[1];
-  in("mode1", top.mode1_i, static_cast<int>(g1.mode), 2)("h1", top.h1_i, g1.h, CW + 5);
-  in("a1", top.a1_i, g1.a, CW)("b1", top.b1_i, g1.b, FT).vec("u1", top.u1_i, g1.u, UW);
-  in("mode2", top.mode2_i, static_cast<int>(g2.mode), 2)("h2", top.h2_i, g2.h, CW + 5);
-  in("a2", top.a2_i, g2.a, CW)("b2", top.b2_i, g2.b, FT).vec("u2", top.u2_i, g2.u, UW);
+  guide_input(in, "g1", top.g1_i, p, g1);
+  guide_input(in, "g2", top.g2_i, p, g2);
   // rpu_candidate and rpu_ip_step take h² from their caller (rpu_ip squares h once per pair).
   if constexpr (requires { top.hh1_i; }) {
     in("hh1", top.hh1_i, i128{g1.h} * g1.h, 2 * CW + 10);

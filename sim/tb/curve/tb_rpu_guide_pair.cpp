@@ -10,6 +10,7 @@
 
 #include "Vrpu_guide_pair.h"
 #include "tb_base.h"
+#include "tb_guide.h"
 
 #ifndef HH_IN
 #define HH_IN 1
@@ -168,10 +169,12 @@ int main(int argc, char** argv) {
   s.inputs = [](sim::Inputs& in, Vrpu_guide_pair& t, const PairOp& op) {
     const auto hh = [&](const Op& g) { return kHhIn ? g.h * g.h : in.random(kRadW); };
     in("t", t.t_i, op.g[0].t, kTW)("L2", t.l2_i, op.g[0].l2, kL2W);
-    in("mode1", t.mode1_i, op.g[0].mode, 2)("h1", t.h1_i, op.g[0].h, kHW)("hh1", t.hh1_i, hh(op.g[0]), kRadW);
-    in("a1", t.a1_i, op.g[0].a, kAW)("b1", t.b1_i, op.g[0].b, kFT);
-    in("mode2", t.mode2_i, op.g[1].mode, 2)("h2", t.h2_i, op.g[1].h, kHW)("hh2", t.hh2_i, hh(op.g[1]), kRadW);
-    in("a2", t.a2_i, op.g[1].a, kAW)("b2", t.b2_i, op.g[1].b, kFT);
+    for (int k = 0; k < 2; ++k) {
+      const Op& g = op.g[k];
+      sim::guide_shape_input(in, k ? "g2" : "g1", k ? t.g2_i : t.g1_i, sim::tb_params(),
+                             static_cast<int>(g.mode), g.h, g.a, g.b);
+      in(k ? "hh2" : "hh1", k ? t.hh2_i : t.hh1_i, hh(g), kRadW);
+    }
   };
   s.outputs = [](sim::Outputs& o, const Vrpu_guide_pair& t, const PairOp& op) {
     o.s("g1", t.g1_o, op.want.g1, kGW).s("g2", t.g2_o, op.want.g2, kGW)("w", t.w_o, op.want.w, kWW);

@@ -26,11 +26,12 @@
 #include "scene/classification_grid.h"
 #include "scene/segment.h"
 #include "tb_base.h"
+#include "tb_guide.h"
 
 namespace {
 
 constexpr int kCw = COORD_W, kFt = T_FRAC;
-constexpr int kTw = kFt + 3, kDw = kCw + 1, kUw = UNIT_FRAC + 2, kHw = kCw + 5;
+constexpr int kTw = kFt + 3, kDw = kCw + 1, kHw = kCw + 5;
 constexpr int kL2w = 2 * kCw + 3, kXw = kCw + 3, kW02w = 2 * kCw + 1, kInvW = INV_W;
 
 struct Scene {
@@ -266,10 +267,7 @@ int main(int argc, char** argv) {
     in.vec("p0", t.p0_i, it.p0, kCw).vec("p1", t.p1_i, d.p1, kCw).vec("d", t.d_i, d.d, kDw);
     in("L2", t.l2_i, d.L2, kL2w)("inv_m", t.inv_m_i, d.inv_m, kInvW)("inv_s", t.inv_s_i, d.inv_s, 7);
     for (int k = 0; k < 2; ++k) {
-      const ref::GuideDesc& g = d.guide[k];
-      in(k ? "mode2" : "mode1", k ? t.mode2_i : t.mode1_i, static_cast<int>(g.mode), 2);
-      in(k ? "h2" : "h1", k ? t.h2_i : t.h1_i, g.h, kHw)(k ? "a2" : "a1", k ? t.a2_i : t.a1_i, g.a, kCw);
-      in(k ? "b2" : "b1", k ? t.b2_i : t.b1_i, g.b, kFt).vec(k ? "u2" : "u1", k ? t.u2_i : t.u1_i, g.u, kUw);
+      sim::guide_input(in, k ? "g2" : "g1", k ? t.g2_i : t.g1_i, sim::tb_params(), d.guide[k]);
     }
     in("w0_2", t.w0_2_i, d.w0_2, kW02w);
   };
