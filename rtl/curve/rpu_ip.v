@@ -47,7 +47,8 @@ module rpu_ip #(
 );
   localparam integer KW = 8;
 `include "rpu_guide_desc.vh"
-  localparam integer HW = GdHW;  // guide height h
+  localparam integer HW = GsHW;              // guide height h
+  localparam integer GdHO = GdShapeO + GsHO;  // h within the descriptor
   // Everything a step needs, as one bundle {pair, caller's context, overflow}; the pair's fields
   // from the top: A, AB, α, β, p1, d, L², then per guide its descriptor and h², {g, h²}.
   localparam integer GhW   = GdW + RadW;
