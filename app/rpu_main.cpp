@@ -197,8 +197,10 @@ struct CommonFlags {
     o.map.quantised = !patch_map_full;
     if (!(patch_tolerance > 0.0 && patch_tolerance <= 1.0))
       throw Error("--patch-tolerance", fmt::format("must be in (0, 1] pixels, got {}", patch_tolerance));
-    if (patch_iterations < 1 || patch_iterations > 100000)
-      throw Error("--patch-iterations", fmt::format("must be in [1, 100000], got {}", patch_iterations));
+    if (patch_iterations < 1 || patch_iterations > limits::kMaxPatchIterations)
+      throw Error("--patch-iterations",
+                  fmt::format("must be in [1, {}] (README, \"Limits\"), got {}",
+                              limits::kMaxPatchIterations, patch_iterations));
     o.refine.tolerance_pixels = patch_tolerance;
     o.refine.max_iterations = patch_iterations;
     o.refine.max_evaluations = 4 * patch_iterations;
