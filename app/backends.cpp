@@ -86,6 +86,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
       // trace patches alike (--patch-method). Nearest hit wins against curves and textures.
       patch::PatchRenderOptions po = o.patch;
       po.threads = fo.threads;
+      po.where = sc.source + ": patches";
       const std::vector<patch::PatchSurface> surfaces = patch::prepare_surfaces(sc.patches);
       patch::PatchRender pr = patch::render_patches(surfaces, sc.camera, po);
       image::Frame& f = r.render.frame;
