@@ -185,7 +185,7 @@ def write_surfaces(write, builtin):
     mix = builtin("surf_mix")
     mix["curves"], mix["textures"] = [], []
     write("surf_mix_surfaces.json", mix)
-    for s in (1e-5,):
+    for s in (1e-5, 1e-8, 1e-9):
         m = json.loads(json.dumps(mix))
         m["camera"]["eye"] = scaled(m["camera"]["eye"], s)
         m["camera"]["target"] = scaled(m["camera"]["target"], s)

@@ -73,7 +73,7 @@ inline constexpr long long kMaxMartinLeaves = 1LL << 20;
 inline constexpr long long kMapPairsPerPixel = 64;
 inline constexpr long long kMartinPairsPerPixel = 64;
 inline constexpr long long kRandomStartPairsPerPixel = 16;
-inline constexpr long long kSurfacePairsPerPixel = 16;
+inline constexpr long long kSurfacePairsPerPixel = 4;
 inline constexpr long long kMinPairBudget = 1LL << 16;
 
 // rpu volume: work units (one unit: a control point visited by an evaluation, or a term of the
