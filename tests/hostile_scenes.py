@@ -106,7 +106,7 @@ def main():
             return json.load(f)
 
     if "budgets" in groups:
-        write_budgets(write)
+        write_budgets(write, out)
     if "images" in groups:
         write_images(write, builtin, out)
     if "volume" in groups:
@@ -115,26 +115,43 @@ def main():
         write_surfaces(write, builtin)
 
 
-def write_budgets(write):
+def write_budgets(write, out):
     # Patches crossing the eye plane at 8×8.
-    for n in (100, 1000):
+    for n in (1, 100, 1000):
         write(f"eye_plane_{n}.json", {"camera": camera((0, 0, 0), (0, 1, 0)),
                                       "patches": [{"type": "bezier_set", "degree": [3, 3],
                                                    "patches": [eye_plane_patch()] * n}]})
-    # Many patches.
-    for n in (4096, 10000):
+    # Many patches: the most a scene may have, stacked, and more than that.
+    for n in (4096, 4097, 10000):
         write(f"patches_{n}.json", {"camera": camera((0, -4, 0), (0, 0, 0), 40, 256, 256),
                                     "patches": [{"type": "bezier_set", "degree": [3, 3],
                                                  "patches": [small_patch()] * n}]})
-    # A 1000×1000 cubic B-spline (about 50 MB).
+    # A 1000×1000 cubic B-spline (about 30 MB), written as text directly (json.dump of a million
+    # points takes many seconds): x and z on a grid, y a ripple along i + j.
     n = 1000
     knots = [0, 0, 0, 0] + [i / (n - 3) for i in range(1, n - 3)] + [1, 1, 1, 1]
-    points = [[round(2 * i / n - 1, 6), round(0.05 * math.sin(0.1 * (i + j)), 6),
-               round(2 * j / n - 1, 6)] for i in range(n) for j in range(n)]
-    write("bspline_1000.json", {"camera": camera((0, -4, 0), (0, 0, 0), 40, 64, 64),
-                                "patches": [{"type": "bspline", "degree": [3, 3], "size": [n, n],
-                                             "knots_u": knots, "knots_v": knots,
-                                             "control_points": points}]})
+    coord = ["%.6g" % (2 * i / n - 1) for i in range(n)]
+    ripple = ["%.6g" % (0.05 * math.sin(0.1 * k)) for k in range(2 * n)]
+    points = ",".join("[%s,%s,%s]" % (coord[i], ripple[i + j], coord[j])
+                      for i in range(n) for j in range(n))
+    head = json.dumps({"camera": camera((0, -4, 0), (0, 0, 0), 40, 64, 64)})[:-1]
+    patch = json.dumps({"type": "bspline", "degree": [3, 3], "size": [n, n],
+                        "knots_u": knots, "knots_v": knots})[:-1]
+    with open(os.path.join(out, "bspline_1000.json"), "w") as f:
+        f.write(head + ', "patches": [' + patch + ', "control_points": [' + points + "]}]}")
+    # Its exact hit count: the clamped surface is a graph over the square x, z in [lo, hi] (its
+    # edge control points) at y within ±0.05 of 0 (the control points' range), seen from
+    # (0, -4, 0); a pixel centre's ray meets it iff its slopes x/c and z/c lie within
+    # (lo, hi)/(4 + y), and the count is the same for every y in [-0.05, 0.05].
+    sigma = 2 * math.tan(math.radians(40) / 2) / 64
+    lo, hi = 2 * 0 / n - 1, 2 * (n - 1) / n - 1
+    counts = set()
+    for y in (-0.05, 0.05):
+        side = sum(1 for i in range(64) if lo / (4 + y) < (i + 0.5 - 32) * sigma < hi / (4 + y))
+        counts.add(side * side)
+    assert len(counts) == 1
+    with open(os.path.join(out, "bspline_hits.txt"), "w") as f:
+        f.write(f"{counts.pop()}\n")
 
 
 def write_images(write, builtin, out):
@@ -149,6 +166,7 @@ def write_images(write, builtin, out):
         for fov in (40, 90, 120, 150, 170, 179.9):
             write(f"strip_{fov}.json", strip(fov))
             f.write(f"{fov} {strip_hits(fov)}\n")
+    write("strip_179.95.json", strip(179.95))  # past the widest field of view of the patches
     # The teapot and its camera scaled by a common factor.
     teapot = builtin("teapot")
     for s in (1e-9, 1e-10, 1e-100, 1e-300):
@@ -179,7 +197,7 @@ def write_volume(write, builtin):
 
 def write_surfaces(write, builtin):
     spiral_camera = camera((11.5, 10.2, 16.2), (-0.14, 2.77, -0.44), 26.36, 16, 16, (0, 1, 0))
-    for n in (64, 1000, 10000):
+    for n in (1, 64, 256, 257, 1000, 10000):
         write(f"spirals_{n}.json", {"camera": spiral_camera, "surfaces": [{"type": "spiral"}] * n})
     # The surfaces of surf_mix, and the same scene with its camera scaled by a common factor.
     mix = builtin("surf_mix")

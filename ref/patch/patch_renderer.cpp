@@ -370,7 +370,7 @@ NormalisedScene normalise(const std::vector<PatchSurface>& surfaces, const scene
 
 long long patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& o) {
   const long long pixels = static_cast<long long>(camera.width) * camera.height;
-  long long bytes = pixels * static_cast<long long>(sizeof(PatchPixel));
+  long long bytes = pixels * (static_cast<long long>(sizeof(PatchPixel)) + kFrameBytesPerPixel);
   if (o.method == PatchMethod::kMartin) {
     bytes += o.martin.max_leaves * kMartinBytesPerLeaf;
   } else {
@@ -381,19 +381,23 @@ long long patch_render_bytes(const scene::CameraFrame& camera, const PatchRender
   return bytes;
 }
 
+void check_patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& options) {
+  const long long bytes = patch_render_bytes(camera, options);
+  if (bytes > options.max_bytes)
+    throw Error(options.where, fmt::format(
+        "rendering the patches at {}x{} needs {} MiB (frame, image, hit map, {}); at most {} MiB "
+        "(README, \"Limits\"); use a smaller --size{}", camera.width, camera.height, bytes >> 20,
+        options.method == PatchMethod::kMartin ? "Martin's BVH" : "preliminary map",
+        options.max_bytes >> 20,
+        options.method == PatchMethod::kMartin ? "" : " or --patch-map-size"));
+}
+
 PatchRender render_patches(const std::vector<PatchSurface>& world_surfaces,
                            const scene::CameraFrame& world_camera, const PatchRenderOptions& options) {
   PatchRender r;
   const long long pixels = static_cast<long long>(world_camera.width) * world_camera.height;
   r.hits.width = world_camera.width, r.hits.height = world_camera.height;
-  const long long bytes = patch_render_bytes(world_camera, options);
-  if (bytes > options.max_bytes)
-    throw Error(options.where, fmt::format(
-        "rendering the patches at {}x{} needs {} MiB (hit map, {}); at most {} MiB (README, "
-        "\"Limits\"); use a smaller --size or --patch-map-size",
-        world_camera.width, world_camera.height, bytes >> 20,
-        options.method == PatchMethod::kMartin ? "Martin's BVH" : "preliminary map",
-        options.max_bytes >> 20));
+  check_patch_render_bytes(world_camera, options);
   const double fov = 360.0 / std::numbers::pi * std::atan(world_camera.half);
   if (!(fov <= limits::kMaxPatchFovDeg + 1e-9))
     throw Error(options.where, fmt::format(

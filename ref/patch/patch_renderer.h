@@ -60,10 +60,17 @@ inline constexpr double kMinUlpsPerPixel = 4096;
 // Memory accounted per leaf of Martin's BVH (the leaf, two nodes, the build's order and copy;
 // the map's tessellation in flight: kMapChunkBytes, preliminary_map.h).
 inline constexpr long long kMartinBytesPerLeaf = 200;
+// The frame of the float backends (primitive and depth per pixel) and the image written from it
+// (RGB floats and the 8-bit copy of the writer), per pixel: a render of a scene with patches
+// holds them beside the patches' own buffers.
+inline constexpr long long kFrameBytesPerPixel = 12 + 12 + 4;
 
-// The memory render_patches needs for this image and these options, checked against
-// options.max_bytes before anything is allocated.
+// The memory a render of a scene with patches needs for this image and these options (the
+// frame and the image, the hit map, the preliminary map or Martin's BVH at its budget), and
+// the check of it against options.max_bytes: rpu::Error(options.where, ...) naming the budget.
+// run_backend checks before the frame is allocated, render_patches again before its own buffers.
 long long patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& options);
+void check_patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& options);
 
 struct PatchRenderStats {
   double map_seconds = 0;      // preliminary map (thesis, newton) or BVH build (martin)
