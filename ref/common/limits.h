@@ -50,8 +50,9 @@ inline constexpr double kMaxPatchFovDeg = 179.9;
 // evaluation budget is 4× this.
 inline constexpr int kMaxPatchIterations = 1024;
 
-// Memory of one patch rendering: the preliminary map (16 bytes per texel), the per-pixel hit map
-// (40 bytes per pixel), the tessellation in flight and Martin's BVH (200 bytes per leaf).
+// Memory of one render of a scene with patches: the frame and the image, the per-pixel hit map,
+// the preliminary map and the tessellation in flight, or Martin's BVH at its leaf budget
+// (patch::patch_render_bytes, ref/patch/patch_renderer.h).
 inline constexpr long long kMaxPatchRenderBytes = 1LL << 30;
 
 // Tessellation cells of the preliminary map, summed over the patches (each cell is a point
@@ -59,14 +60,15 @@ inline constexpr long long kMaxPatchRenderBytes = 1LL << 30;
 inline constexpr long long kMaxMapCells = 1LL << 21;
 inline constexpr int kMaxMapCellsPerSide = 1024;
 
-// Martin's BVH: Bézier pieces after knot insertion (per patch and in all) and sub-patch leaves.
+// Martin's BVH: Bézier pieces per patch after knot insertion, and sub-patch leaves in all.
 inline constexpr long long kMaxMartinPiecesPerPatch = 1LL << 12;
 inline constexpr long long kMaxMartinLeaves = 1LL << 20;
 
 // Ray/primitive work that no per-pixel bound limits: texel/patch pairs of the preliminary map's
 // rasterisation (its overdraw), ray/box pairs of Martin's traversal (a Newton start each),
 // ray/patch pairs of random starts (eq 3: 64 evaluations and up to 4 descents each) and
-// ray/surface pairs of the surface tracers (up to about 2,000 indicator evaluations each). The
+// ray/surface pairs of the surface tracers (`float`: up to 2·kIdealSamplesPerRadius indicator
+// evaluations per piece). The
 // estimate counts the pixels (texels) inside the screen rectangle of each projected control net
 // or box (every pixel for one reaching behind the eye). The budget is kPairsPerPixel pairs per
 // pixel (texel) on average, and never below kMinPairBudget.
@@ -78,8 +80,7 @@ inline constexpr long long kMinPairBudget = 1LL << 16;
 
 // rpu volume: work units (one unit: a control point visited by an evaluation, or a term of the
 // exact Bernstein sums) over the exact sums, the Gauss–Legendre check, the graphical integration
-// at 10×10 and 100×100 nodes and the slice samples at --slice-grid. About 10^8 units per second
-// per core.
+// at 10×10 and 100×100 nodes and the slice samples at --slice-grid (patch::volume_work).
 inline constexpr long long kMaxVolumeWork = 1LL << 30;
 
 // Largest sweep grid (configurations after expansion) and largest worker count.
