@@ -55,8 +55,10 @@ void parallel_rows(int rows, int threads, RowFn row_fn, FinishFn finish_fn) {
     } catch (const std::system_error& e) {
       fail(std::make_exception_ptr(Error(
           "--threads", "cannot start worker thread " + std::to_string(pool.size() + 2) + " of " +
-                           std::to_string(n) + " (" + e.code().message() +
-                           "); lower --threads (README, \"Limits\")")));
+                           std::to_string(n) + " (" + e.code().message() + "; " +
+                           (threads > 0 ? std::to_string(threads) + " asked"
+                                        : std::string("one per core")) +
+                           ", at most one per row); lower --threads (README, \"Limits\")")));
     } catch (const std::bad_alloc&) {
       fail(std::current_exception());
     }
