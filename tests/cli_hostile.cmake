@@ -46,7 +46,9 @@ function(run label want_rc)
   if(RUN_STDOUT)
     set(redirect " >${RUN_STDOUT}")
   endif()
-  execute_process(COMMAND sh -c "ulimit -v ${VMEM} && exec \"$0\" \"$@\"${redirect}" ${RPU} ${args}
+  # The stack size of threads follows `ulimit -s`: 8 MiB, the usual default, where it may be set
+  # (the --threads case counts on 1,024 stacks not fitting in the address space).
+  execute_process(COMMAND sh -c "ulimit -s 8192 2>/dev/null; ulimit -v ${VMEM} && exec \"$0\" \"$@\"${redirect}" ${RPU} ${args}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT ${TIMEOUT})
   string(STRIP "${err}" err_stripped)
   set(bad "")
