@@ -74,6 +74,11 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
                 "the " + backend + " backend has no RTL path yet for vector-described surfaces "
                 "(docs/algorithms.md §3); render them with --backend float, float-ip or ref");
   r.render.name = backend;
+  patch::PatchRenderOptions po = o.patch;
+  po.threads = o.fl.threads;
+  po.where = sc.source + ": patches";
+  // The memory of a render with patches, before the frame is allocated (README, "Limits").
+  if (!sc.patches.empty()) patch::check_patch_render_bytes(sc.camera, po);
   const auto t0 = std::chrono::steady_clock::now();
   if (backend == "float" || backend == "float-ip") {
     tracer::FloatOptions fo = o.fl;
@@ -84,8 +89,6 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     if (!sc.patches.empty()) {
       // The patch methods are themselves the thesis's iterative processes: float and float-ip
       // trace patches alike (--patch-method). Nearest hit wins against curves and textures.
-      patch::PatchRenderOptions po = o.patch;
-      po.threads = fo.threads;
       const std::vector<patch::PatchSurface> surfaces = patch::prepare_surfaces(sc.patches);
       patch::PatchRender pr = patch::render_patches(surfaces, sc.camera, po);
       image::Frame& f = r.render.frame;

@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -195,8 +197,10 @@ struct CommonFlags {
     o.map.quantised = !patch_map_full;
     if (!(patch_tolerance > 0.0 && patch_tolerance <= 1.0))
       throw Error("--patch-tolerance", fmt::format("must be in (0, 1] pixels, got {}", patch_tolerance));
-    if (patch_iterations < 1 || patch_iterations > 100000)
-      throw Error("--patch-iterations", fmt::format("must be in [1, 100000], got {}", patch_iterations));
+    if (patch_iterations < 1 || patch_iterations > limits::kMaxPatchIterations)
+      throw Error("--patch-iterations",
+                  fmt::format("must be in [1, {}] (README, \"Limits\"), got {}",
+                              limits::kMaxPatchIterations, patch_iterations));
     o.refine.tolerance_pixels = patch_tolerance;
     o.refine.max_iterations = patch_iterations;
     o.refine.max_evaluations = 4 * patch_iterations;
@@ -315,6 +319,21 @@ int print_markdown(const CLI::App& cmd, const CommonFlags& flags, const std::str
   return 0;
 }
 
+// Output printed on stdout (rpu config, rpu scenes, rpu volume's table) is checked like every
+// file rpu writes: a failed write (a full disk, /dev/full, a closed pipe) is one error line and
+// exit 1, never a silent loss with exit 0.
+int check_stdout(int status) {
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    const int err = errno;
+    std::cerr << "rpu: error: standard output: cannot write"
+              << (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+    return 1;
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -418,8 +437,8 @@ int main(int argc, char** argv) {
                     "--rtl-fault", "--patch-method", "--patch-map-size", "--patch-map-full",
                     "--patch-start", "--patch-tolerance", "--patch-iterations"},
                    "it prints the parameter set and renders nothing");
-      if (!markdown.empty()) return print_markdown(*config_cmd, flags, markdown);
-      return print_config(flags);
+      if (!markdown.empty()) return check_stdout(print_markdown(*config_cmd, flags, markdown));
+      return check_stdout(print_config(flags));
     }
     if (compare_cmd->parsed()) {
       compare.backends = flags.backend_options();
@@ -439,10 +458,10 @@ int main(int argc, char** argv) {
       if (ec) sweep.self = argv[0];
       return app::run_sweep(sweep);
     }
-    if (volume_cmd->parsed()) return app::run_volume(volume_scene, volume, std::cout);
+    if (volume_cmd->parsed()) return check_stdout(app::run_volume(volume_scene, volume, std::cout));
     if (list_cmd->parsed()) {
       for (const auto& b : app::builtin_scenes()) std::cout << "builtin:" << b.name << "\n";
-      return 0;
+      return check_stdout(0);
     }
   } catch (const rpu::Error& e) {
     std::cerr << "rpu: error: " << e.what() << "\n";

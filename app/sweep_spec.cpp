@@ -303,6 +303,13 @@ LoadedScenes load_sweep_scenes(const SweepSpec& s) {
       text = read_input_file(sc.path, "scene file");
     }
     out.scenes.push_back(scene::parse_scene(text, sc.path));
+    // The sweep measures the model (ref) against the float tracers; ref has no path for patches,
+    // so a frame with patches would compare two images that both lack them.
+    if (!out.scenes.back().patches.empty())
+      throw Error(sc.path + ": patches",
+                  "a sweep measures the ref model against float and float-ip, and ref has no "
+                  "fixed-point path for parametric patches (docs/algorithms.md §4); remove the "
+                  "scene from the sweep or its patches from the scene");
     all += sc.label + '\0' + hash_hex(text) + '\0';
   }
   out.fingerprint = hash_hex(all);

@@ -8,7 +8,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <string>
 
+#include "common/error.h"
+#include "common/limits.h"
 #include "patch/martin_bvh.h"
 #include "patch/patch_renderer.h"
 #include "patch/preliminary_map.h"
@@ -313,6 +316,267 @@ TEST(PatchAgreement, TeapotRandomStarts) {
   std::printf("teapot 96x96 random starts: agreement %.3f %% of %lld\n", a.c.agreement_percent,
               static_cast<long long>(a.c.union_hits));
   EXPECT_GE(a.c.agreement_percent, 99.0);
+}
+
+// ---- the edges of the domain (issue 24) ----
+
+// A camera at the origin looking along +y, up z.
+scene::CameraFrame origin_camera(double fov, int side) {
+  scene::Camera c;
+  c.eye = {0, 0, 0};
+  c.target = {0, 1, 0};
+  c.up = {0, 0, 1};
+  c.fov_deg = fov;
+  c.width = c.height = side;
+  return scene::make_camera_frame(c, "test");
+}
+
+// A flat bilinear rectangle x in [x0, x1], y in [y0, y1] at height z.
+Patch rectangle(double x0, double x1, double y0, double y1, double z) {
+  Patch p;
+  p.type = PatchType::kBezier;
+  p.degree_u = p.degree_v = 1;
+  p.size_u = p.size_v = 2;
+  p.control_points = {{x0, y0, z}, {x0, y1, z}, {x1, y0, z}, {x1, y1, z}};
+  return p;
+}
+
+// The exact hit mask of that rectangle: the pixel-centre rays that meet it in front of the eye.
+std::vector<bool> rectangle_mask(const scene::CameraFrame& cam, double x0, double x1, double y0,
+                                 double y1, double z) {
+  std::vector<bool> mask;
+  for (int j = 0; j < cam.height; ++j)
+    for (int i = 0; i < cam.width; ++i) {
+      const Vec3 d = cam.ray_direction(i, j);
+      const double t = (z - cam.eye.z) / d.z;
+      const Vec3 p = cam.eye + d * t;
+      mask.push_back(d.z != 0 && t > 0 && p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1);
+    }
+  return mask;
+}
+
+int mismatches(const PatchHitMap& h, const std::vector<bool>& mask) {
+  int bad = 0;
+  for (size_t k = 0; k < mask.size(); ++k) bad += h.pixels[k].hit != mask[k];
+  return bad;
+}
+
+int hit_count(const PatchHitMap& h) {
+  int n = 0;
+  for (const PatchPixel& p : h.pixels) n += p.hit;
+  return n;
+}
+
+// Issue 24: a flat strip through the eye plane (its parameter centre beside the eye) is drawn
+// exactly, pixel for pixel, by every method at every field of view up to the widest allowed;
+// Martin's method drew 10 of 1,374 pixels, the map methods none at 179.9°.
+TEST(PatchEdges, StripThroughTheEyePlaneIsExactAtEveryFieldOfView) {
+  const Patch strip = rectangle(-0.5, 0.5, -5, 5, -0.5);
+  const std::vector<PatchSurface> s = prepare_surfaces({strip});
+  for (double fov : {40.0, 90.0, 120.0, 150.0, 170.0, 179.0, 179.9}) {
+    const scene::CameraFrame cam = origin_camera(fov, 40);
+    const std::vector<bool> mask = rectangle_mask(cam, -0.5, 0.5, -5, 5, -0.5);
+    for (PatchMethod m : {PatchMethod::kThesis, PatchMethod::kNewton, PatchMethod::kMartin}) {
+      PatchRenderOptions o;
+      o.method = m;
+      const PatchRender r = render_patches(s, cam, o);
+      EXPECT_EQ(mismatches(r.hits, mask), 0) << "fov " << fov << " " << patch_method_name(m);
+      EXPECT_GT(hit_count(r.hits), 300) << "fov " << fov;
+    }
+  }
+}
+
+// A map grid finer than one chunk of the tessellation (kChunkCells): the rows of one patch are
+// split over several work items, and the map is still exact.
+TEST(PatchEdges, PatchSplitAcrossTessellationChunksIsExact) {
+  const scene::CameraFrame cam = origin_camera(60, 48);
+  const std::vector<PatchSurface> s = prepare_surfaces({rectangle(-0.5, 0.5, -5, 5, -0.5)});
+  PatchRenderOptions o;
+  o.map.grid = 600;  // 360,000 cells > kChunkCells
+  ASSERT_GT(600LL * 600, kChunkCells);
+  const PatchRender r = render_patches(s, cam, o);
+  EXPECT_EQ(mismatches(r.hits, rectangle_mask(cam, -0.5, 0.5, -5, 5, -0.5)), 0);
+}
+
+TEST(PatchEdges, FieldOfViewPastTheLimitIsRefusedNamingTheKey) {
+  const std::vector<PatchSurface> s = prepare_surfaces({rectangle(-0.5, 0.5, -5, 5, -0.5)});
+  PatchRenderOptions o;
+  o.where = "s.json: patches";
+  try {
+    render_patches(s, origin_camera(179.95, 16), o);
+    FAIL() << "fov 179.95 accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: patches: camera.fov_deg 179.95 is wider than 179.9"),
+              std::string::npos) << e.what();
+  }
+}
+
+// Scale invariance: the teapot and its camera scaled by s draw the same pixels, the same patches,
+// and depths scaled by s, down to 1e-300 (before, nothing below 1e-10).
+TEST(PatchEdges, ScaledSceneAndCameraDrawTheSameImage) {
+  const scene::Scene base = builtin("teapot", 48);
+  for (PatchMethod m : {PatchMethod::kThesis, PatchMethod::kMartin}) {
+    PatchRenderOptions o;
+    o.method = m;
+    const PatchRender want =
+        render_patches(prepare_surfaces(base.patches), scene::make_camera_frame(base.camera, "t"), o);
+    ASSERT_GT(hit_count(want.hits), 400);
+    for (double f : {0x1p-40, 1e-10, 1e-100, 1e-300, 1e5}) {
+      scene::Scene sc = base;
+      sc.camera.eye = sc.camera.eye * f;
+      sc.camera.target = sc.camera.target * f;
+      for (Patch& p : sc.patches)
+        for (Vec3& c : p.control_points) c = c * f;
+      const PatchRender got =
+          render_patches(prepare_surfaces(sc.patches), scene::make_camera_frame(sc.camera, "t"), o);
+      int differ = 0;
+      for (size_t k = 0; k < want.hits.pixels.size(); ++k) {
+        const PatchPixel &a = want.hits.pixels[k], &b = got.hits.pixels[k];
+        differ += a.hit != b.hit || a.patch != b.patch;
+        if (a.hit && b.hit) EXPECT_NEAR(b.depth / f, a.depth, 1e-6 * a.depth) << f;
+      }
+      EXPECT_EQ(differ, 0) << "scale " << f << " " << patch_method_name(m);
+    }
+  }
+}
+
+// The precision rule: a scene too small for double precision at its coordinates (a 1e-12 teapot
+// at 1,000 from the origin: a pixel spans a few units in the last place) is refused, not drawn
+// as noise.
+TEST(PatchEdges, SceneTooSmallForItsCoordinatesIsRefused) {
+  scene::Scene sc = builtin("teapot", 32);
+  const Vec3 far{1000, 1000, 1000};
+  sc.camera.eye = sc.camera.eye * 1e-12 + far;
+  sc.camera.target = sc.camera.target * 1e-12 + far;
+  for (Patch& p : sc.patches)
+    for (Vec3& c : p.control_points) c = c * 1e-12 + far;
+  PatchRenderOptions o;
+  EXPECT_THROW(render_patches(prepare_surfaces(sc.patches), scene::make_camera_frame(sc.camera, "t"), o),
+               Error);
+}
+
+// NURBS weights multiplied by one factor describe the same surface: the same image (the
+// thesis's refiner drew none of the torus at 1e-200: w² underflowed, "singular").
+TEST(PatchEdges, NurbsWeightsScaledByOneFactorDrawTheSameImage) {
+  const scene::Scene base = builtin("torus", 40);
+  const scene::CameraFrame cam = scene::make_camera_frame(base.camera, "t");
+  for (PatchMethod m : {PatchMethod::kThesis, PatchMethod::kNewton, PatchMethod::kMartin}) {
+    PatchRenderOptions o;
+    o.method = m;
+    const PatchRender want = render_patches(prepare_surfaces(base.patches), cam, o);
+    for (double f : {1e-200, 2e-300, 1e8}) {
+      std::vector<Patch> patches = base.patches;
+      for (double& w : patches[0].weights) w *= f;
+      const PatchRender got = render_patches(prepare_surfaces(patches), cam, o);
+      int differ = 0;
+      for (size_t k = 0; k < want.hits.pixels.size(); ++k)
+        differ += want.hits.pixels[k].hit != got.hits.pixels[k].hit;
+      EXPECT_EQ(differ, 0) << "weights x " << f << " " << patch_method_name(m);
+      EXPECT_GT(hit_count(got.hits), 300);
+    }
+  }
+}
+
+// A bicubic patch crossing the eye plane (issue 24: 22 MB of map each): one copy agrees with the
+// tessellated reference, and 40 stacked copies draw the same pixels in little memory (the map's
+// grid comes from the part in front of the eye and on the map).
+TEST(PatchEdges, PatchesCrossingTheEyePlane) {
+  Patch p;
+  p.type = PatchType::kBezier;
+  p.degree_u = p.degree_v = 3;
+  p.size_u = p.size_v = 4;
+  const double xs[4] = {-1, -0.33, 0.33, 1}, ys[4] = {-5, -1.67, 1.67, 5};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) p.control_points.push_back({xs[i], ys[j], 0.5 + 0.1 * ((i + j) % 2)});
+  scene::Camera c;
+  c.eye = {0, 0, 0};
+  c.target = {0, 1, 0};
+  c.up = {0, 0, 1};
+  c.fov_deg = 40;
+  c.width = c.height = 48;
+  const scene::CameraFrame cam = scene::make_camera_frame(c, "t");
+  const PatchHitMap ref = render_tessellated_reference({p}, c, "t");
+  PatchRenderOptions o;
+  const PatchRender one = render_patches(prepare_surfaces({p}), cam, o);
+  const HitMapComparison a = compare_hit_maps(ref, one.hits);
+  EXPECT_GE(a.agreement_percent, 99.5) << a.only_reference << " / " << a.only_method;
+  EXPECT_GT(a.union_hits, 300);
+  EXPECT_LT(one.stats.map_triangles, 20000);
+  const PatchRender many = render_patches(prepare_surfaces(std::vector<Patch>(40, p)), cam, o);
+  for (size_t k = 0; k < one.hits.pixels.size(); ++k)
+    ASSERT_EQ(one.hits.pixels[k].hit, many.hits.pixels[k].hit) << k;
+}
+
+// ---- budgets (issue 24; README "Limits") ----
+
+std::string refusal(const std::vector<PatchSurface>& s, const scene::CameraFrame& cam,
+                    const PatchRenderOptions& o) {
+  try {
+    render_patches(s, cam, o);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PatchBudgets, EachBudgetRefusesBeforeTheWork) {
+  const scene::Scene teapot = builtin("teapot", 64);
+  const std::vector<PatchSurface> s = prepare_surfaces(teapot.patches);
+  const scene::CameraFrame cam = scene::make_camera_frame(teapot.camera, "t");
+  PatchRenderOptions o;
+  o.where = "t.json: patches";
+  o.map.max_cells = 100;  // the teapot needs at least 32·2·2 cells
+  EXPECT_NE(refusal(s, cam, o).find("t.json: patches: the preliminary map of 32 patches needs"),
+            std::string::npos) << refusal(s, cam, o);
+  o = {};
+  o.max_bytes = 16 << 20;
+  EXPECT_NE(refusal(s, cam, o).find("; at most 16 MiB"), std::string::npos) << refusal(s, cam, o);
+  o = {};
+  o.method = PatchMethod::kMartin;
+  o.martin.max_leaves = 100;
+  EXPECT_NE(refusal(s, cam, o).find("Martin's BVH needs more than 100 sub-patch leaves"), std::string::npos);
+  // Stacked copies: the map's overdraw, random starts, Martin's ray/leaf pairs.
+  const std::vector<PatchSurface> stack = prepare_surfaces(std::vector<Patch>(2000, bump(0, 0.4)));
+  const scene::CameraFrame top = top_camera(64);
+  o = {};
+  EXPECT_NE(refusal(stack, top, o).find("texel/patch pairs"), std::string::npos) << refusal(stack, top, o);
+  o = {};
+  o.method = PatchMethod::kMartin;
+  EXPECT_NE(refusal(stack, top, o).find("ray/sub-patch pairs"), std::string::npos) << refusal(stack, top, o);
+  // Random starts (16 per pixel) are refused before the map's overdraw (64 per texel) would be.
+  const std::vector<PatchSurface> fewer = prepare_surfaces(std::vector<Patch>(300, bump(0, 0.4)));
+  o = {};
+  EXPECT_EQ(refusal(fewer, top, o), "");
+  o.start = PatchStart::kRandom;
+  EXPECT_NE(refusal(fewer, top, o).find("random starts (eq 3) would sample"), std::string::npos)
+      << refusal(fewer, top, o);
+  // Within the budgets the same scene renders.
+  EXPECT_EQ(refusal(prepare_surfaces(std::vector<Patch>(3, bump(0, 0.4))), top, {}), "");
+}
+
+// More knot spans than a direction's cell cap: the direction is tessellated as one span (the
+// 1000×1000 B-spline took 2.6 GB), and the image is exact; Martin's method refuses the pieces.
+TEST(PatchBudgets, BSplineWithMoreSpansThanTheCellCap) {
+  const int n = limits::kMaxMapCellsPerSide + 100;  // degree 1: n − 1 spans in u
+  Patch p;
+  p.type = PatchType::kBSpline;
+  p.degree_u = p.degree_v = 1;
+  p.size_u = n, p.size_v = 2;
+  p.knots_u = {0};
+  for (int i = 0; i < n; ++i) p.knots_u.push_back(double(i) / (n - 1));
+  p.knots_u.push_back(1);
+  p.knots_v = {0, 0, 1, 1};
+  for (int i = 0; i < n; ++i)
+    for (double y : {-5.0, 5.0}) p.control_points.push_back({-0.5 + double(i) / (n - 1), y, -0.5});
+  const scene::CameraFrame cam = origin_camera(60, 40);
+  PatchRenderOptions o;
+  const PatchRender r = render_patches(prepare_surfaces({p}), cam, o);
+  EXPECT_EQ(mismatches(r.hits, rectangle_mask(cam, -0.5, 0.5, -5, 5, -0.5)), 0);
+  EXPECT_LE(r.stats.map_triangles, 4LL * limits::kMaxMapCellsPerSide * limits::kMaxMapCellsPerSide);
+  o.method = PatchMethod::kMartin;
+  o.martin.max_pieces_per_patch = 1000;
+  EXPECT_NE(refusal(prepare_surfaces({p}), cam, o).find("Bézier pieces; at most 1000 per patch"),
+            std::string::npos);
 }
 
 }  // namespace

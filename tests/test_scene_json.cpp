@@ -94,6 +94,29 @@ std::string nurbs_patch(const std::string& weights) {
 }
 
 // A scene with one surface: `members` is the text inside its object.
+// n bilinear patches: in one bezier_set (after `before` single patches), or as n objects.
+std::string many_patches(int n, bool as_set, int before = 0) {
+  const std::string quad = "[[0,0,0],[1,0,0],[0,1,0],[1,1,0]]";
+  std::string items;
+  for (int i = 0; i < before; ++i)
+    items += R"({"type": "bezier", "degree": [1, 1], "control_points": )" + quad + "}, ";
+  if (as_set) {
+    items += R"({"type": "bezier_set", "degree": [1, 1], "patches": [)";
+    for (int i = 0; i < n; ++i) items += (i ? "," : "") + quad;
+    items += "]}";
+  } else {
+    for (int i = 0; i < n; ++i)
+      items += std::string(i ? ", " : "") + R"({"type": "bezier", "degree": [1, 1], "control_points": )" + quad + "}";
+  }
+  return with_camera(R"("patches": [)" + items + "]");
+}
+
+std::string many_surfaces(int n) {
+  std::string items;
+  for (int i = 0; i < n; ++i) items += std::string(i ? ", " : "") + R"({"type": "ellipsoid"})";
+  return with_camera(R"("surfaces": [)" + items + "]");
+}
+
 std::string one_surface(const std::string& members) {
   return with_camera(R"("surfaces": [{)" + members + "}]");
 }
@@ -306,6 +329,15 @@ std::vector<BadCase> bad_cases() {
        "patches[0].control_points", "expected 4 control points ((degree_u + 1)·(degree_v + 1) = 2·2), got 3"},
       {"bezier_point_nan", bezier_patch("", "[1, 1, 1e999]"), "patches[0].control_points[3][2]",
        "not a finite number"},
+      // Issue 24: at most 4,096 patches (a bezier_set's members counted one by one) and 256
+      // surfaces per scene (README, "Limits").
+      {"patches_4097_in_a_set", many_patches(4097, true), "patches[0].patches[4096]",
+       "too many patches: this is patch 4097 of the scene; at most 4096 patches per scene"},
+      {"patches_4097_objects", many_patches(4097, false), "patches[4096]",
+       "too many patches: this is patch 4097 of the scene"},
+      {"patches_set_after_objects", many_patches(4000, true, 100), "patches[100].patches[3996]",
+       "this is patch 4097 of the scene"},
+      {"surfaces_257", many_surfaces(257), "surfaces", "too many surfaces: 257; at most 256 per scene"},
       {"bezier_set_empty", with_camera(R"("patches": [{"type": "bezier_set", "degree": [1, 1], "patches": []}])"),
        "patches[0].patches", "at least one patch"},
       {"bezier_set_count", with_camera(R"("patches": [{"type": "bezier_set", "degree": [1, 1], "patches": [[[0,0,0],[1,0,0],[0,1,0],[1,1,0]], [[0,0,0]]]}])"),
@@ -520,6 +552,12 @@ TEST(SceneJson, FullSceneRoundTrips) {
   EXPECT_FALSE(t.closed);
   EXPECT_EQ(t.half_width, 0.05);
   EXPECT_EQ(t.color, (Color{0.5, 1.0, 0.0}));
+}
+
+// The count limits themselves are accepted (issue 24).
+TEST(SceneJson, PatchAndSurfaceCountsAtTheLimit) {
+  EXPECT_EQ(parse_scene(many_patches(4000, true, 96), kSource).patches.size(), 4096u);
+  EXPECT_EQ(parse_scene(many_surfaces(256), kSource).surfaces.size(), 256u);
 }
 
 TEST(SceneJson, PatchesRoundTrip) {

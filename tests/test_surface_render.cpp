@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "image/frame.h"
 #include "patch/patch_shading.h"
 #include "scene/compiled_scene.h"
@@ -173,6 +174,39 @@ TEST(SurfaceRender, StatisticsCountPairsPiecesAndHits) {
 }
 
 // ---- shading ----
+
+// Issue 24: the budget on ray/surface pairs. Its estimate (the screen rectangles of the bounding
+// spheres) bounds the pixel rays that really meet a bounding sphere; stacked copies past the
+// budget are refused by float, float-ip and ref alike before any work, naming the surfaces.
+TEST(SurfaceBudget, EstimateBoundsThePairsAndRefusesPastTheBudget) {
+  for (const char* name : {"surf_mix", "surf_spiral", "surf_rocket"}) {
+    const CompiledScene sc = scene::compile_scene(demo(name, 48));
+    long long met = 0;
+    for (const scene::CompiledSurface& s : sc.surfaces)
+      for (int j = 0; j < sc.camera.height; ++j)
+        for (int i = 0; i < sc.camera.width; ++i) {
+          const Vec3 d = normalize(sc.camera.ray_direction(i, j));
+          const Vec3 q = s.centre - sc.camera.eye;
+          const double b = dot(q, d), c = dot(q, q) - s.radius * s.radius;
+          met += b * b - c >= 0 && b + std::sqrt(std::max(0.0, b * b - c)) > 0;
+        }
+    EXPECT_GE(scene::surface_screen_pairs(sc), met) << name;
+    EXPECT_GT(met, 0) << name;
+    EXPECT_NO_THROW(scene::check_surface_budget(sc)) << name;
+  }
+  Scene many = demo("surf_spiral", 64);
+  many.surfaces.assign(64, many.surfaces.front());  // 64 full-screen spirals: 64 pairs per pixel
+  const CompiledScene sc = scene::compile_scene(many);
+  EXPECT_GT(scene::surface_screen_pairs(sc), 4LL * 64 * 64);
+  try {
+    render(sc, Method::kIdeal);
+    FAIL() << "64 stacked spirals rendered";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("surf_spiral.json: surfaces: the 64 surfaces cover up to"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_THROW(render(sc, Method::kIterative), Error);
+}
 
 TEST(SurfaceShading, NormalOfASphereIsRadialAndFacesTheEye) {
   scene::Surface s;

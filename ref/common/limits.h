@@ -33,6 +33,56 @@ inline constexpr int kMaxJsonDepth = 64;
 // 3). Evaluation keeps its basis functions in fixed arrays of kMaxPatchDegree + 1.
 inline constexpr int kMaxPatchDegree = 10;
 
+// ---- Patches, surfaces and volumes (issue 24; README "Limits", docs/patches.md and
+// docs/surfaces.md, "Budgets"). Every budget below is checked from the scene and the image before
+// the memory or the work is committed; past it, one error line names the budget and the flag or
+// key to change.
+
+// Patches per scene (a bezier_set counts each member) and surfaces per scene.
+inline constexpr int kMaxPatches = 4096;
+inline constexpr int kMaxSurfaces = 256;
+
+// Widest field of view (camera.fov_deg) of a scene with patches: the map methods lose hits
+// beyond it (docs/patches.md, "Precision").
+inline constexpr double kMaxPatchFovDeg = 179.9;
+
+// --patch-iterations: the budget of the thesis's gradient refiners (steps or directions); their
+// evaluation budget is 4× this.
+inline constexpr int kMaxPatchIterations = 1024;
+
+// Memory of one render of a scene with patches: the frame and the image, the per-pixel hit map,
+// the preliminary map and the tessellation in flight, or Martin's BVH at its leaf budget
+// (patch::patch_render_bytes, ref/patch/patch_renderer.h).
+inline constexpr long long kMaxPatchRenderBytes = 1LL << 30;
+
+// Tessellation cells of the preliminary map, summed over the patches (each cell is a point
+// evaluation and two triangles). A patch gets at most kMaxMapCellsPerSide cells per direction.
+inline constexpr long long kMaxMapCells = 1LL << 21;
+inline constexpr int kMaxMapCellsPerSide = 1024;
+
+// Martin's BVH: Bézier pieces per patch after knot insertion, and sub-patch leaves in all.
+inline constexpr long long kMaxMartinPiecesPerPatch = 1LL << 12;
+inline constexpr long long kMaxMartinLeaves = 1LL << 20;
+
+// Ray/primitive work that no per-pixel bound limits: texel/patch pairs of the preliminary map's
+// rasterisation (its overdraw), ray/box pairs of Martin's traversal (a Newton start each),
+// ray/patch pairs of random starts (eq 3: 64 evaluations and up to 4 descents each) and
+// ray/surface pairs of the surface tracers (`float`: up to 2·kIdealSamplesPerRadius indicator
+// evaluations per piece). The
+// estimate counts the pixels (texels) inside the screen rectangle of each projected control net
+// or box (every pixel for one reaching behind the eye). The budget is kPairsPerPixel pairs per
+// pixel (texel) on average, and never below kMinPairBudget.
+inline constexpr long long kMapPairsPerPixel = 64;
+inline constexpr long long kMartinPairsPerPixel = 64;
+inline constexpr long long kRandomStartPairsPerPixel = 16;
+inline constexpr long long kSurfacePairsPerPixel = 4;
+inline constexpr long long kMinPairBudget = 1LL << 16;
+
+// rpu volume: work units (one unit: a control point visited by an evaluation, or a term of the
+// exact Bernstein sums) over the exact sums, the Gauss–Legendre check, the graphical integration
+// at 10×10 and 100×100 nodes and the slice samples at --slice-grid (patch::volume_work).
+inline constexpr long long kMaxVolumeWork = 1LL << 30;
+
 // Largest sweep grid (configurations after expansion) and largest worker count.
 inline constexpr long long kMaxSweepConfigurations = 10000;
 inline constexpr int kMaxThreads = 1024;

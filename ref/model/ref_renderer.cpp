@@ -5,6 +5,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/error.h"
 #include "common/parallel.h"
 #include "model/surface/rpu_surface_top.h"
 #include "model/units.h"
@@ -14,6 +15,12 @@ namespace rpu::ref {
 
 image::Frame render_ref(const scene::CompiledScene& sc, const ModelScene& m,
                         const RefOptions& o, RefStats* stats) {
+  // The model has no fixed-point path for patches: never a frame that silently lacks them
+  // (run_backend and the sweep refuse such scenes first, naming them).
+  if (!sc.patches.empty())
+    throw Error(sc.source + ": patches", "the ref backend has no fixed-point path for parametric "
+                                         "patches (docs/algorithms.md §4)");
+  scene::check_surface_budget(sc);
   const CameraDesc& cam = m.camera;
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(sc.camera, sc.curve_segments, 8, o.binning);

@@ -2,11 +2,14 @@
 // traversal with Newton from each met leaf's parameter centre.
 #include "patch/martin_bvh.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
+#include "common/error.h"
 namespace rpu::patch {
 namespace {
 
@@ -94,11 +97,19 @@ struct SubPatchRefiner {
     const int p = net.nu - 1, q = net.nv - 1;
     Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
     std::vector<Vec3> c(net.p.size());
+    double c_min = std::numeric_limits<double>::infinity(), c_max = -c_min;
     for (size_t k = 0; k < c.size(); ++k) {
       c[k] = cartesian(net.p[k]);
       lo = {std::min(lo.x, c[k].x), std::min(lo.y, c[k].y), std::min(lo.z, c[k].z)};
       hi = {std::max(hi.x, c[k].x), std::max(hi.y, c[k].y), std::max(hi.z, c[k].z)};
+      if (o.eye_plane) {
+        const double d = dot(o.eye_plane->forward, c[k] - o.eye_plane->eye);
+        c_min = std::min(c_min, d), c_max = std::max(c_max, d);
+      }
     }
+    // The sub-patch lies in the convex hull of its control points (NURBS: positive weights).
+    if (o.eye_plane && !(c_max > 0.0)) return;  // wholly behind the eye
+    const bool straddles = o.eye_plane && !(c_min > 0.0);
     const auto C = [&](int i, int j) { return c[static_cast<size_t>(i * net.nv + j)]; };
     const double diag = length(hi - lo);
     double dev = 0;
@@ -109,19 +120,42 @@ struct SubPatchRefiner {
                         C(0, q) * ((1 - s) * t) + C(p, q) * (s * t);
         dev = std::max(dev, length(C(i, j) - bl));
       }
-    if (dev <= o.flatness * diag || depth >= o.max_depth) {
+    if ((dev <= o.flatness * diag || depth >= o.max_depth) &&
+        (!straddles || depth >= o.max_depth + o.eye_plane_depth)) {
+      if (static_cast<long long>(leaves.size()) >= o.max_leaves)
+        throw Error(o.where, fmt::format(
+            "Martin's BVH needs more than {} sub-patch leaves (README, \"Limits\"); use fewer or "
+            "flatter patches, or --patch-method thesis or newton", o.max_leaves));
       const Vec3 pad = Vec3{1, 1, 1} * (1e-9 * (diag + 1e-300));
       leaves.push_back({patch, u0, u1, v0, v1, lo - pad, hi + pad});
       return;
     }
-    // Split across the longer direction of the control net.
+    // Split across the longer direction of the control net; a flat sub-patch that straddles
+    // the eye plane across the direction in which its depth varies more (so one child of each
+    // split lies in front or behind, and the straddling chain stays one leaf wide).
+    if (straddles && dev <= o.flatness * diag) {
+      double cu = 0, cv = 0;
+      const auto depth_of = [&](int i, int j) {
+        return dot(o.eye_plane->forward, C(i, j) - o.eye_plane->eye);
+      };
+      for (int j = 0; j <= q; ++j)
+        for (int i = 0; i < p; ++i) cu = std::max(cu, std::fabs(depth_of(i + 1, j) - depth_of(i, j)));
+      for (int i = 0; i <= p; ++i)
+        for (int j = 0; j < q; ++j) cv = std::max(cv, std::fabs(depth_of(i, j + 1) - depth_of(i, j)));
+      split(net, u0, u1, v0, v1, depth, cu >= cv);
+      return;
+    }
     double len_u = 0, len_v = 0;
     for (int j = 0; j <= q; ++j)
       for (int i = 0; i < p; ++i) len_u += length(C(i + 1, j) - C(i, j));
     for (int i = 0; i <= p; ++i)
       for (int j = 0; j < q; ++j) len_v += length(C(i, j + 1) - C(i, j));
     len_u /= (q + 1), len_v /= (p + 1);
-    if (len_u >= len_v) {
+    split(net, u0, u1, v0, v1, depth, len_u >= len_v);
+  }
+
+  void split(const Net& net, double u0, double u1, double v0, double v1, int depth, bool along_u) {
+    if (along_u) {
       const auto [a, b] = split_u(net);
       const double um = 0.5 * (u0 + u1);
       subdivide(a, u0, um, v0, v1, depth + 1);
@@ -171,6 +205,19 @@ MartinBvh::MartinBvh(const std::vector<PatchSurface>& patches, const MartinOptio
     }
     std::vector<double> bu{0.0, 1.0}, bv{0.0, 1.0};
     if (pt.type != scene::PatchType::kBezier) {
+      // Bézier pieces: the distinct knot spans in u times those in v, counted before the knot
+      // insertion (whose work grows with the pieces times the net).
+      const auto spans = [](const std::vector<double>& k) {
+        long long n = 0;
+        for (size_t i = 0; i + 1 < k.size(); ++i) n += k[i + 1] > k[i];
+        return n;
+      };
+      const long long pieces = spans(s.knots_u()) * spans(s.knots_v());
+      if (pieces > options_.max_pieces_per_patch)
+        throw Error(options_.where + "[" + std::to_string(k) + "]",
+                    fmt::format("Martin's method splits this patch into {} Bézier pieces; at most "
+                                "{} per patch (README, \"Limits\"); use --patch-method thesis or "
+                                "newton", pieces, options_.max_pieces_per_patch));
       bu = decompose_u(net, s.knots_u(), pt.degree_u);
       Net t = net.transposed();
       bv = decompose_u(t, s.knots_v(), pt.degree_v);

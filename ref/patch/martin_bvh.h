@@ -9,19 +9,38 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "common/limits.h"
 #include "patch/patch_surface.h"
 #include "patch/ray_frame.h"
 #include "patch/refiners.h"
 
 namespace rpu::patch {
 
+// The plane through the eye perpendicular to the camera's forward axis: points with
+// W·(P − eye) <= 0 are behind the eye, where no ray of the camera goes.
+struct EyePlane {
+  Vec3 eye, forward;
+};
+
 struct MartinOptions {
   // A sub-patch is flat when its control points deviate from the bilinear surface through its
   // corner points by at most `flatness` of its box diagonal.
   double flatness = 0.05;
   int max_depth = 10;        // subdivisions (u and v together) below each Bézier piece
+  // With the camera's eye plane: sub-patches wholly behind it are dropped, and a flat sub-patch
+  // that straddles it is split further (up to eye_plane_depth more levels), so that Newton's
+  // start, the leaf's parameter centre, lies in front of the eye wherever the leaf can be seen.
+  std::optional<EyePlane> eye_plane;
+  int eye_plane_depth = 12;
+  // Budgets (limits.h): Bézier pieces per patch after knot insertion, leaves in all; past them
+  // the constructor throws rpu::Error(where, ...) before allocating more.
+  long long max_pieces_per_patch = limits::kMaxMartinPiecesPerPatch;
+  long long max_leaves = limits::kMaxMartinLeaves;
+  std::string where = "patches";
   // Martin: a few Newton steps from the leaf's centre, converged as the thesis refiners are
   // (render_patches passes PatchRenderOptions::refine.tolerance_pixels).
   RefineOptions newton{.tolerance_pixels = 1e-2, .max_newton_iterations = 8};

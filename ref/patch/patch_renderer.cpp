@@ -6,9 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <numbers>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "common/error.h"
+#include "common/limits.h"
 #include "common/parallel.h"
 
 namespace rpu::patch {
@@ -284,31 +288,207 @@ PatchHitMap trace_martin(const std::vector<PatchSurface>& surfaces, const Martin
   return out;
 }
 
-PatchRender render_patches(const std::vector<PatchSurface>& surfaces,
-                           const scene::CameraFrame& camera, const PatchRenderOptions& options) {
+namespace {
+
+// Screen pixels inside the rectangle of a box's projected corners (all of them when a corner is
+// not in front of the eye): an upper bound on the pixel rays that meet the box.
+long long box_pixels(const Vec3& lo, const Vec3& hi, const scene::CameraFrame& cam) {
+  const long long all = static_cast<long long>(cam.width) * cam.height;
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+    const Vec3 q = c - cam.eye;
+    const double w = dot(cam.W, q);
+    if (!(w > 0.0)) return all;
+    const double x = dot(cam.U, q) / (w * cam.sigma) + 0.5 * cam.width;
+    const double y = 0.5 * cam.height - dot(cam.V, q) / (w * cam.sigma);
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  const double w = std::clamp(std::ceil(x1) - std::floor(x0), 0.0, double(cam.width));
+  const double h = std::clamp(std::ceil(y1) - std::floor(y0), 0.0, double(cam.height));
+  if (!(x1 >= 0 && x0 <= cam.width && y1 >= 0 && y0 <= cam.height)) return 0;
+  return static_cast<long long>(w) * static_cast<long long>(h);
+}
+
+long long pair_budget(long long per_pixel, const scene::CameraFrame& cam) {
+  return std::max(limits::kMinPairBudget,
+                  per_pixel * static_cast<long long>(cam.width) * cam.height);
+}
+
+// The patches and the camera in a frame centred on the eye and scaled by a power of two 2^k so
+// that the farthest control point lies between 1 and 2·√3 from the eye: every method then runs at
+// the same relative precision whatever the scene's scale, and the depths found are scaled back
+// exactly (docs/patches.md, "Precision").
+struct NormalisedScene {
+  std::vector<PatchSurface> surfaces;
+  scene::CameraFrame camera;
+  double to_world = 1;  // world length of one unit of the frame (a power of two)
+};
+
+NormalisedScene normalise(const std::vector<PatchSurface>& surfaces, const scene::CameraFrame& cam,
+                          const std::string& where) {
+  // far: the largest coordinate difference from the eye (a length would underflow its squares
+  // at tiny scales; the distance is at most √3 times this).
+  double far = 0, largest = std::max({std::fabs(cam.eye.x), std::fabs(cam.eye.y), std::fabs(cam.eye.z)});
+  for (const PatchSurface& s : surfaces)
+    for (const Vec3& p : s.patch().control_points) {
+      const Vec3 d = p - cam.eye;
+      far = std::max({far, std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+      largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    }
+  // Precision rule: a pixel at the farthest control point must span at least
+  // kMinUlpsPerPixel units in the last place of the largest coordinate (the rounding of the
+  // scene's own numbers, and of every P − eye).
+  const double ulp = std::max(std::ldexp(1.0, std::ilogb(largest) - 52),
+                              std::numeric_limits<double>::denorm_min());
+  const double pixel = cam.sigma * far;
+  if (!(pixel >= kMinUlpsPerPixel * ulp))
+    throw Error(where, fmt::format(
+        "the patches are too small for double precision at their coordinates: a pixel at the "
+        "farthest control point spans {:.3g} world units, {:.3g} units in the last place of the "
+        "largest coordinate {:.3g}; at least {:g} are needed (docs/patches.md, \"Precision\"); "
+        "move the scene and the camera nearer the origin or enlarge them",
+        pixel, pixel / ulp, largest, kMinUlpsPerPixel));
+  NormalisedScene n;
+  const int k = -std::ilogb(far);  // 2^k·far in [1, 2)
+  n.to_world = std::ldexp(1.0, -k);
+  n.camera = cam;
+  n.camera.eye = Vec3{0, 0, 0};
+  n.surfaces.reserve(surfaces.size());
+  for (const PatchSurface& s : surfaces) {
+    scene::Patch p = s.patch();
+    for (Vec3& c : p.control_points) {
+      const Vec3 d = c - cam.eye;
+      c = Vec3{std::ldexp(d.x, k), std::ldexp(d.y, k), std::ldexp(d.z, k)};
+    }
+    n.surfaces.emplace_back(p);
+  }
+  return n;
+}
+
+}  // namespace
+
+long long patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& o) {
+  const long long pixels = static_cast<long long>(camera.width) * camera.height;
+  long long bytes = pixels * (static_cast<long long>(sizeof(PatchPixel)) + kFrameBytesPerPixel);
+  if (o.method == PatchMethod::kMartin) {
+    bytes += o.martin.max_leaves * kMartinBytesPerLeaf;
+  } else {
+    const long long texels = static_cast<long long>(o.map.width > 0 ? o.map.width : camera.width) *
+                             (o.map.height > 0 ? o.map.height : camera.height);
+    bytes += texels * static_cast<long long>(sizeof(MapTexel)) + kMapChunkBytes;
+  }
+  return bytes;
+}
+
+void check_patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& options) {
+  const long long bytes = patch_render_bytes(camera, options);
+  if (bytes > options.max_bytes)
+    throw Error(options.where, fmt::format(
+        "rendering the patches at {}x{} needs {} MiB (frame, image, hit map, {}); at most {} MiB "
+        "(README, \"Limits\"); use a smaller --size{}", camera.width, camera.height, bytes >> 20,
+        options.method == PatchMethod::kMartin ? "Martin's BVH" : "preliminary map",
+        options.max_bytes >> 20,
+        options.method == PatchMethod::kMartin ? "" : " or --patch-map-size"));
+}
+
+PatchRender render_patches(const std::vector<PatchSurface>& world_surfaces,
+                           const scene::CameraFrame& world_camera, const PatchRenderOptions& options) {
   PatchRender r;
+  const long long pixels = static_cast<long long>(world_camera.width) * world_camera.height;
+  r.hits.width = world_camera.width, r.hits.height = world_camera.height;
+  check_patch_render_bytes(world_camera, options);
+  const double fov = 360.0 / std::numbers::pi * std::atan(world_camera.half);
+  if (!(fov <= limits::kMaxPatchFovDeg + 1e-9))
+    throw Error(options.where, fmt::format(
+        "camera.fov_deg {:.9g} is wider than {:g}, the widest field of view the patch tracers "
+        "are accurate at (docs/patches.md, \"Precision\")", fov, limits::kMaxPatchFovDeg));
+  if (world_surfaces.empty()) {
+    r.hits.pixels.assign(static_cast<size_t>(pixels), PatchPixel{});
+    return r;
+  }
+  const NormalisedScene n = normalise(world_surfaces, world_camera, options.where);
+  const std::vector<PatchSurface>& surfaces = n.surfaces;
+  const scene::CameraFrame& camera = n.camera;
   if (options.method == PatchMethod::kMartin) {
     auto t0 = Clock::now();
     MartinOptions mo = options.martin;
     mo.newton.tolerance_pixels = options.refine.tolerance_pixels;
+    mo.eye_plane = EyePlane{camera.eye, camera.W};
+    mo.where = options.where;
     const MartinBvh bvh(surfaces, mo);
     r.stats.map_seconds = seconds_since(t0);
     r.stats.bvh_leaves = static_cast<std::int64_t>(bvh.leaves().size());
     r.stats.bvh_nodes = static_cast<std::int64_t>(bvh.nodes().size());
+    long long pairs = 0;
+    for (const MartinLeaf& l : bvh.leaves()) pairs += box_pixels(l.lo, l.hi, camera);
+    const long long budget = pair_budget(limits::kMartinPairsPerPixel, camera);
+    if (pairs > budget)
+      throw Error(options.where, fmt::format(
+          "Martin's traversal would test up to {} ray/sub-patch pairs ({:.1f} of its {} leaves "
+          "per pixel at {}x{}); at most {} (README, \"Limits\"); use fewer overlapping patches "
+          "or --patch-method thesis", pairs, double(pairs) / double(pixels), bvh.leaves().size(),
+          camera.width, camera.height, budget));
     t0 = Clock::now();
     r.hits = trace_martin(surfaces, bvh, camera, options.threads, r.stats);
     r.stats.refine_seconds = seconds_since(t0);
-    return r;
+  } else {
+    // Pixels inside each patch's screen box (its projected control points, one pixel of margin
+    // as the random starts use), summed over the patches (only the Bézier ones: `bezier_only`).
+    const auto covered = [&](bool bezier_only) {
+      long long pairs = 0;
+      for (const PatchSurface& s : surfaces) {
+        if (bezier_only && s.patch().type != scene::PatchType::kBezier) continue;
+        const ScreenBox b = screen_box(s.patch(), camera);
+        if (b.everywhere) {
+          pairs += pixels;
+          continue;
+        }
+        const double w = std::clamp(std::ceil(b.x1 + 1) - std::floor(b.x0 - 1), 0.0, double(camera.width));
+        const double h = std::clamp(std::ceil(b.y1 + 1) - std::floor(b.y0 - 1), 0.0, double(camera.height));
+        if (b.x1 + 1 < 0 || b.x0 - 1 > camera.width || b.y1 + 1 < 0 || b.y0 - 1 > camera.height) continue;
+        pairs += static_cast<long long>(w) * static_cast<long long>(h);
+      }
+      return pairs;
+    };
+    // The map's rasterisation visits every texel under every patch (its overdraw); counted in
+    // image pixels, the map's own size scaled in (a --patch-map-size other than the image's).
+    {
+      const long long texels = static_cast<long long>(options.map.width > 0 ? options.map.width : camera.width) *
+                               (options.map.height > 0 ? options.map.height : camera.height);
+      const long long pairs = static_cast<long long>(
+          static_cast<double>(covered(false)) * static_cast<double>(texels) / static_cast<double>(pixels));
+      const long long budget =
+          std::max(limits::kMinPairBudget, limits::kMapPairsPerPixel * texels);
+      if (pairs > budget)
+        throw Error(options.where, fmt::format(
+            "the preliminary map would rasterise up to {} texel/patch pairs ({:.1f} of the {} "
+            "patches per texel of a {}-texel map); at most {} (README, \"Limits\"); use fewer "
+            "overlapping patches", pairs, double(pairs) / double(texels), surfaces.size(), texels,
+            budget));
+    }
+    if (options.start == PatchStart::kRandom && options.method == PatchMethod::kThesis) {
+      const long long pairs = covered(true);
+      const long long budget = pair_budget(limits::kRandomStartPairsPerPixel, camera);
+      if (pairs > budget)
+        throw Error(options.where, fmt::format(
+            "random starts (eq 3) would sample up to {} ray/patch pairs ({:.1f} patches per pixel "
+            "at {}x{}); at most {} (README, \"Limits\"); use fewer overlapping patches or "
+            "--patch-start map", pairs, double(pairs) / double(pixels), camera.width,
+            camera.height, budget));
+    }
+    auto t0 = Clock::now();
+    MapOptions mo = options.map;
+    mo.threads = options.threads;
+    mo.where = options.where;
+    const PreliminaryMap map = build_preliminary_map(surfaces, camera, mo);
+    r.stats.map_seconds = seconds_since(t0);
+    r.stats.map_triangles = map.triangles;
+    t0 = Clock::now();
+    r.hits = refine_with_map(surfaces, map, camera, options, r.stats);
+    r.stats.refine_seconds = seconds_since(t0);
   }
-  auto t0 = Clock::now();
-  MapOptions mo = options.map;
-  mo.threads = options.threads;
-  const PreliminaryMap map = build_preliminary_map(surfaces, camera, mo);
-  r.stats.map_seconds = seconds_since(t0);
-  r.stats.map_triangles = map.triangles;
-  t0 = Clock::now();
-  r.hits = refine_with_map(surfaces, map, camera, options, r.stats);
-  r.stats.refine_seconds = seconds_since(t0);
+  for (PatchPixel& p : r.hits.pixels) p.depth *= n.to_world;  // exact: a power of two
   return r;
 }
 

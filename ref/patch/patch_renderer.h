@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/limits.h"
 #include "patch/martin_bvh.h"
 #include "patch/patch_surface.h"
 #include "patch/preliminary_map.h"
@@ -47,7 +48,29 @@ struct PatchRenderOptions {
   std::optional<Refiner> refiner;       // overrides the per-type refiner (benchmarks, tests)
   MartinOptions martin;
   int threads = 0;                      // 0 = all cores
+  // Budgets (limits.h): the memory of the rendering (patch_render_bytes) and, through map and
+  // martin, the tessellation cells and the BVH; `where` names the scene in a refusal.
+  long long max_bytes = limits::kMaxPatchRenderBytes;
+  std::string where = "patches";
 };
+
+// Precision rule of render_patches (docs/patches.md, "Precision"): a pixel at the farthest
+// control point must span at least this many units in the last place of the largest coordinate.
+inline constexpr double kMinUlpsPerPixel = 4096;
+// Memory accounted per leaf of Martin's BVH (the leaf, two nodes, the build's order and copy;
+// the map's tessellation in flight: kMapChunkBytes, preliminary_map.h).
+inline constexpr long long kMartinBytesPerLeaf = 200;
+// The frame of the float backends (primitive and depth per pixel) and the image written from it
+// (RGB floats and the 8-bit copy of the writer), per pixel: a render of a scene with patches
+// holds them beside the patches' own buffers.
+inline constexpr long long kFrameBytesPerPixel = 12 + 12 + 4;
+
+// The memory a render of a scene with patches needs for this image and these options (the
+// frame and the image, the hit map, the preliminary map or Martin's BVH at its budget), and
+// the check of it against options.max_bytes: rpu::Error(options.where, ...) naming the budget.
+// run_backend checks before the frame is allocated, render_patches again before its own buffers.
+long long patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& options);
+void check_patch_render_bytes(const scene::CameraFrame& camera, const PatchRenderOptions& options);
 
 struct PatchRenderStats {
   double map_seconds = 0;      // preliminary map (thesis, newton) or BVH build (martin)
@@ -82,7 +105,11 @@ PatchHitMap refine_with_map(const std::vector<PatchSurface>& surfaces, const Pre
 PatchHitMap trace_martin(const std::vector<PatchSurface>& surfaces, const MartinBvh& bvh,
                          const scene::CameraFrame& camera, int threads, PatchRenderStats& stats);
 
-// The whole rendering: map (or BVH) and refinement (or traversal), with times.
+// The whole rendering: map (or BVH) and refinement (or traversal), with times. Runs in a frame
+// centred on the eye and scaled by a power of two (the same image at every scale; depths in
+// world units); refuses, with rpu::Error(options.where, ...), a scene past the precision rule or
+// a budget: the memory, the map's cells, Martin's pieces, leaves and ray/leaf pairs, the random
+// starts' ray/patch pairs (limits.h).
 PatchRender render_patches(const std::vector<PatchSurface>& surfaces,
                            const scene::CameraFrame& camera, const PatchRenderOptions& options);
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <cmath>
 
 namespace rpu::patch {
 namespace {
@@ -101,6 +102,17 @@ void bspline_basis(const std::vector<double>& knots, int p, int span, double t, 
 }
 
 PatchSurface::PatchSurface(const scene::Patch& patch) : patch_(patch) {
+  // A NURBS surface does not change when every weight is multiplied by one factor: the weights
+  // are scaled by a power of two (exact) so that the largest is in [1, 2). Weights 1e-200 would
+  // otherwise underflow w² in the refiners (docs/patches.md, "Precision").
+  if (patch_.type == scene::PatchType::kNurbs && !patch_.weights.empty()) {
+    const double largest = *std::max_element(patch_.weights.begin(), patch_.weights.end());
+    if (largest > 0.0 && std::isfinite(largest)) {
+      const int e = -std::ilogb(largest);
+      for (double& w : patch_.weights) w = std::ldexp(w, e);
+    }
+  }
+  const scene::Patch& p_ = patch_;
   assert(patch.degree_u >= 1 && patch.degree_u <= kMaxPatchDegree);
   assert(patch.degree_v >= 1 && patch.degree_v <= kMaxPatchDegree);
   const int count = patch.size_u * patch.size_v;
@@ -123,7 +135,7 @@ PatchSurface::PatchSurface(const scene::Patch& patch) : patch_(patch) {
   }
   hw_.resize(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) {
-    const double w = rational_ ? patch.weights[static_cast<size_t>(i)] : 1.0;
+    const double w = rational_ ? p_.weights[static_cast<size_t>(i)] : 1.0;
     const Vec3& c = patch.control_points[static_cast<size_t>(i)];
     hw_[static_cast<size_t>(i)] = {c.x * w, c.y * w, c.z * w, w};
   }

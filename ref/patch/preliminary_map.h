@@ -7,8 +7,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "common/limits.h"
 #include "patch/patch_surface.h"
 #include "scene/camera.h"
 
@@ -19,7 +21,13 @@ struct MapOptions {
   bool quantised = true;          // u, v to 8 bits (eqs 6–8); false: full precision
   int grid = 0;                   // tessellation cells per patch side; 0 = automatic (per knot span)
   double max_chord_pixels = 0.25; // automatic grid: chord error below this, in map texels
-  int max_grid = 256;
+  int max_grid = 256;             // automatic grid: cells per knot span
+  // Cells of one patch per direction (more knot spans than this: the direction is tessellated
+  // as one span) and cells of all patches together (limits.h; past it build_preliminary_map
+  // throws rpu::Error(where, ...) before tessellating).
+  int max_cells_per_side = limits::kMaxMapCellsPerSide;
+  long long max_cells = limits::kMaxMapCells;
+  std::string where = "patches";  // names the scene in a refusal
   int threads = 0;                // 0 = all cores
 };
 
@@ -48,6 +56,23 @@ inline double quantise_parameter(double t) {
   return q < 0.0 ? 0.0 : (q > 1.0 ? 1.0 : q);
 }
 
+// The tessellation's cell counts per patch, in both directions (the knot lines and the cells per
+// span of the automatic grid), without tessellating. Their sum is what the budget bounds.
+struct MapGrid {
+  std::vector<std::vector<double>> us, vs;  // per patch: the parameter lines in u and in v
+  long long cells = 0;                      // Σ (|us| − 1)·(|vs| − 1)
+};
+MapGrid preliminary_map_grid(const std::vector<PatchSurface>& patches,
+                             const scene::CameraFrame& camera, const MapOptions& options);
+
+// Builds the map. Triangles are clipped at a near plane 1e-6 of the patches' extent in front of
+// the eye (a triangle reaching behind the eye keeps its part in front), tessellated and
+// rasterised in chunks of bounded size (kChunkCells cells), so the memory in flight does not
+// grow with the number of patches. Throws rpu::Error(options.where, ...) when the cells exceed
+// options.max_cells.
+inline constexpr long long kChunkCells = 1LL << 17;
+// The memory of one chunk in flight, at most (checked at compile time against the triangles' size).
+inline constexpr long long kMapChunkBytes = 64LL << 20;
 PreliminaryMap build_preliminary_map(const std::vector<PatchSurface>& patches,
                                      const scene::CameraFrame& camera, const MapOptions& options);
 

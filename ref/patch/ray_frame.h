@@ -16,7 +16,11 @@ struct RayFrame {
   Vec3 dir;     // pixel-centre direction, W component 1 (CameraFrame::ray_direction)
   Vec3 e1, e2;  // orthonormal, perpendicular to dir
   Vec3 forward; // camera W: depth axis
-  double pixel_angle = 0;  // pixel size σ per unit depth (world size of a pixel at depth c: σ·c)
+  // Size of the pixel across the ray per unit depth: σ/|dir| (world size at depth c: σ·c/|dir|).
+  // On the axis this is σ; away from it the pixel's footprint across the ray narrows to σ·c/|dir|
+  // in the radial direction (the screen plane is oblique there), which at a wide field of view
+  // (|dir| up to 1/cos of half the diagonal field) is far below σ·c.
+  double pixel_angle = 0;
 
   static RayFrame through_pixel(const scene::CameraFrame& cam, double x, double y) {
     // x, y: continuous pixel coordinates (pixel (i, j) has its centre at (i + 0.5, j + 0.5)).
@@ -25,7 +29,7 @@ struct RayFrame {
     r.dir = cam.W + cam.U * ((x - 0.5 * cam.width) * cam.sigma) +
             cam.V * ((0.5 * cam.height - y) * cam.sigma);
     r.forward = cam.W;
-    r.pixel_angle = cam.sigma;
+    r.pixel_angle = cam.sigma / length(r.dir);
     const Vec3 d = normalize(r.dir);
     r.e1 = normalize(cam.U - d * dot(cam.U, d));
     r.e2 = cross(d, r.e1);

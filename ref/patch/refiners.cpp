@@ -23,9 +23,14 @@ struct Domain {
   }
 };
 
-// Convergence distance in world units: `tolerance_pixels` of a pixel at depth c.
-double world_tolerance(const RayFrame& ray, const RefineOptions& o, double depth) {
-  return o.tolerance_pixels * ray.pixel_angle * std::max(std::fabs(depth), 1e-300);
+// Convergence: the point p is within `tolerance_pixels` of a pixel of the ray, the pixel taken at
+// p's own depth c (a start behind the eye, c <= 0, has not converged: Martin's leaf centres, a
+// map start across the eye plane; the iteration goes on from there).
+bool converged(const RayFrame& ray, const RefineOptions& o, const Vec3& p, double g) {
+  const double depth = ray.depth(p);
+  if (!(depth > 0.0)) return false;
+  const double tol = o.tolerance_pixels * ray.pixel_angle * depth;
+  return g < tol * tol;
 }
 
 // Residual (S_x, S_y) and its Jacobian in the ray frame.
@@ -72,8 +77,7 @@ RefineResult gradient_descent(const PatchSurface& s, const RayFrame& ray, double
   r.evaluations = 1;
   Linearised l = linearise(ray, sp);
   double g = l.g();
-  const double tol = world_tolerance(ray, o, ray.depth(sp.p));
-  if (g < tol * tol) return finish(r, RefineStatus::kConverged, ray, sp.p, g);
+  if (converged(ray, o, sp.p, g)) return finish(r, RefineStatus::kConverged, ray, sp.p, g);
   const double a = l.xu * l.xu + l.yu * l.yu, b = l.xu * l.xv + l.yu * l.yv,
                c = l.xv * l.xv + l.yv * l.yv;
   const double lambda_max = 0.5 * (a + c) + std::sqrt(0.25 * (a - c) * (a - c) + b * b);
@@ -93,7 +97,7 @@ RefineResult gradient_descent(const PatchSurface& s, const RayFrame& ray, double
       continue;
     }
     r.u = nu, r.v = nv, sp = next, l = ln, g = ln.g();
-    if (g < tol * tol) return finish(r, RefineStatus::kConverged, ray, sp.p, g);
+    if (converged(ray, o, sp.p, g)) return finish(r, RefineStatus::kConverged, ray, sp.p, g);
   }
   return finish(r, RefineStatus::kIterationLimit, ray, sp.p, g);
 }
@@ -113,8 +117,7 @@ RefineResult steepest_descent(const PatchSurface& s, const RayFrame& ray, double
   Linearised l = linearise(ray, sp);
   Vec3 p = sp.p;
   double g = l.g();
-  const double tol = world_tolerance(ray, o, ray.depth(sp.p));
-  if (g < tol * tol) return finish(r, RefineStatus::kConverged, ray, p, g);
+  if (converged(ray, o, p, g)) return finish(r, RefineStatus::kConverged, ray, p, g);
   // d = Jᵀr = ∇g/2; the linearised line minimum of g along −d is at −(rᵀJd / |Jd|²)·d.
   double du = l.x * l.xu + l.y * l.yu, dv = l.x * l.xv + l.y * l.yv;
   double dn = std::hypot(du, dv);
@@ -135,7 +138,7 @@ RefineResult steepest_descent(const PatchSurface& s, const RayFrame& ray, double
     }
     if (gn < g) {  // step 3: keep the direction
       r.u = nu, r.v = nv, p = pn, g = gn, moved = true;
-      if (g < tol * tol) return finish(r, RefineStatus::kConverged, ray, p, g);
+      if (converged(ray, o, p, g)) return finish(r, RefineStatus::kConverged, ray, p, g);
       continue;
     }
     // Step 4: shrink the step by the inverse golden ratio, recompute the direction (step 1).
@@ -174,7 +177,6 @@ RefineResult newton_cramer(const PatchSurface& s, const RayFrame& ray, double u0
   const double ex = dot(ray.e1, ray.eye), ey = dot(ray.e2, ray.eye);
   const Vec3& a = ray.e1;
   const Vec3& b = ray.e2;
-  double tol = -1.0;
   constexpr double xr = 0.0, yr = 0.0;  // the ray's point in the projection plane
   while (true) {
     const HomogeneousPoint h = s.homogeneous(r.u, r.v);
@@ -183,8 +185,7 @@ RefineResult newton_cramer(const PatchSurface& s, const RayFrame& ray, double u0
     const double ys = b.x * h.hx + b.y * h.hy + b.z * h.hz - ey * h.w;
     const double g = (xs * xs + ys * ys) / (h.w * h.w);
     const Vec3 p = Vec3{h.hx, h.hy, h.hz} / h.w;
-    if (tol < 0.0) tol = world_tolerance(ray, o, ray.depth(p));
-    if (g < tol * tol) return finish(r, RefineStatus::kConverged, ray, p, g);
+    if (converged(ray, o, p, g)) return finish(r, RefineStatus::kConverged, ray, p, g);
     if (r.iterations >= o.max_newton_iterations)
       return finish(r, RefineStatus::kIterationLimit, ray, p, g);
     ++r.iterations;
@@ -210,14 +211,12 @@ RefineResult newton(const PatchSurface& s, const RayFrame& ray, double u0, doubl
   RefineResult r;
   const Domain dom(s);
   r.u = dom.u(u0), r.v = dom.v(v0);
-  double tol = -1.0;
   while (true) {
     const SurfacePoint sp = s.evaluate(r.u, r.v);
     ++r.evaluations;
     const Linearised l = linearise(ray, sp);
     const double g = l.g();
-    if (tol < 0.0) tol = world_tolerance(ray, o, ray.depth(sp.p));
-    if (g < tol * tol) return finish(r, RefineStatus::kConverged, ray, sp.p, g);
+    if (converged(ray, o, sp.p, g)) return finish(r, RefineStatus::kConverged, ray, sp.p, g);
     if (r.iterations >= o.max_newton_iterations)
       return finish(r, RefineStatus::kIterationLimit, ray, sp.p, g);
     ++r.iterations;

@@ -13,8 +13,8 @@
 //                                      Jacobian of the full (rational) evaluation.
 // Parameters are clamped to the domain [0, 1]² after every step (wrapped around in a closed
 // direction, PatchSurface::closed_u/closed_v). Convergence: the distance of
-// the surface point from the ray, sqrt(g), below `tolerance_pixels` of a pixel at the start's
-// depth.
+// the surface point from the ray, sqrt(g), below `tolerance_pixels` of a pixel across the ray at
+// the point's own depth (RayFrame::pixel_angle·c); a point behind the eye has not converged.
 #pragma once
 
 #include <cstdint>
@@ -35,7 +35,7 @@ enum class RefineStatus {
 };
 
 struct RefineOptions {
-  double tolerance_pixels = 1e-2;  // convergence: distance from the ray in pixels at the depth
+  double tolerance_pixels = 1e-2;  // convergence: distance from the ray, pixels at the point
   int max_iterations = 64;         // gradient steps (eq 4) / directions (eq 9)
   int max_newton_iterations = 16;  // Newton-type iterations (quadratic convergence needs few)
   int max_evaluations = 256;       // surface evaluations (steepest descent's point evaluations)

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <mutex>
 
 #include "common/error.h"
 #include "common/parallel.h"
@@ -116,42 +115,51 @@ void require_bezier(const std::vector<scene::Patch>& patches, const std::string&
 }
 
 double exact_volume(const std::vector<scene::Patch>& patches) {
-  double volume = 0;
-  std::vector<TripleTable> tables;  // by degree
-  auto table = [&](int n) -> const TripleTable& {
+  // The tables of every degree first (shared, read-only), then one sum per patch on all cores,
+  // added in patch order (the result does not depend on the threads).
+  std::vector<TripleTable> tables;
+  const auto table = [&](int n) -> const TripleTable& {
     for (const auto& t : tables)
       if (t.n == n) return t;
-    tables.emplace_back(n);
-    return tables.back();
+    throw Error("exact volume", "no table of degree " + std::to_string(n));
   };
-  for (const auto& p : patches) {
-    const int n = p.degree_u, m = p.degree_v;
-    table(n);
-    table(m);  // both built before references are taken (tables may grow)
-    const TripleTable& tu = table(n);
-    const TripleTable& tv = table(m);
-    const auto& c = p.control_points;
-    double sum = 0;
-    // ½ Σ X1 Y2 Z3 [Iu(Y')·Iv(Z') − Iu(Z')·Iv(Y') + Iu(Z')·Iv(X') − Iu(X')·Iv(Z')]  (eq 25)
-    for (int a1 = 0; a1 <= n; ++a1)
-      for (int b1 = 0; b1 <= m; ++b1) {
-        const double x = c[a1 * (m + 1) + b1].x;
-        for (int a2 = 0; a2 <= n; ++a2)
-          for (int b2 = 0; b2 <= m; ++b2) {
-            const double xy = x * c[a2 * (m + 1) + b2].y;
-            for (int a3 = 0; a3 <= n; ++a3)
-              for (int b3 = 0; b3 <= m; ++b3) {
-                const double z = c[a3 * (m + 1) + b3].z;
-                const double w = tu.get(1, a1, a2, a3) * tv.get(2, b1, b2, b3) -
-                                 tu.get(2, a1, a2, a3) * tv.get(1, b1, b2, b3) +
-                                 tu.get(2, a1, a2, a3) * tv.get(0, b1, b2, b3) -
-                                 tu.get(0, a1, a2, a3) * tv.get(2, b1, b2, b3);
-                sum += xy * z * w;
+  for (const auto& p : patches)
+    for (int n : {p.degree_u, p.degree_v})
+      if (std::none_of(tables.begin(), tables.end(), [&](const TripleTable& t) { return t.n == n; }))
+        tables.emplace_back(n);
+  std::vector<double> per_patch(patches.size(), 0.0);
+  parallel_rows(
+      static_cast<int>(patches.size()), 0,
+      [&](int k) {
+        const scene::Patch& p = patches[static_cast<size_t>(k)];
+        const int n = p.degree_u, m = p.degree_v;
+        const TripleTable& tu = table(n);
+        const TripleTable& tv = table(m);
+        const auto& c = p.control_points;
+        double sum = 0;
+        // ½ Σ X1 Y2 Z3 [Iu(Y')·Iv(Z') − Iu(Z')·Iv(Y') + Iu(Z')·Iv(X') − Iu(X')·Iv(Z')]  (eq 25)
+        for (int a1 = 0; a1 <= n; ++a1)
+          for (int b1 = 0; b1 <= m; ++b1) {
+            const double x = c[a1 * (m + 1) + b1].x;
+            for (int a2 = 0; a2 <= n; ++a2)
+              for (int b2 = 0; b2 <= m; ++b2) {
+                const double xy = x * c[a2 * (m + 1) + b2].y;
+                for (int a3 = 0; a3 <= n; ++a3)
+                  for (int b3 = 0; b3 <= m; ++b3) {
+                    const double z = c[a3 * (m + 1) + b3].z;
+                    const double w = tu.get(1, a1, a2, a3) * tv.get(2, b1, b2, b3) -
+                                     tu.get(2, a1, a2, a3) * tv.get(1, b1, b2, b3) +
+                                     tu.get(2, a1, a2, a3) * tv.get(0, b1, b2, b3) -
+                                     tu.get(0, a1, a2, a3) * tv.get(2, b1, b2, b3);
+                    sum += xy * z * w;
+                  }
               }
           }
-      }
-    volume += 0.5 * sum;
-  }
+        per_patch[static_cast<size_t>(k)] = 0.5 * sum;
+      },
+      [](auto&) {});
+  double volume = 0;
+  for (double v : per_patch) volume += v;
   return volume;
 }
 
@@ -181,14 +189,20 @@ double graphical_volume(const std::vector<scene::Patch>& patches, int n, int m,
     return nodes == GraphicalNodes::kMidpoint ? (i + 0.5) / count
                                               : static_cast<double>(i) / (count - 1);  // eq 24
   };
+  // One sum per patch on all cores, added in patch order.
+  std::vector<double> per_patch(patches.size(), 0.0);
+  parallel_rows(
+      static_cast<int>(patches.size()), 0,
+      [&](int k) {
+        const PatchSurface surface(patches[static_cast<size_t>(k)]);
+        double sum = 0;
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < m; ++j) sum += thesis_integrand(surface.evaluate(node(i, n), node(j, m)));
+        per_patch[static_cast<size_t>(k)] = sum / (static_cast<double>(n) * m);  // eq 23 (½ in the integrand)
+      },
+      [](auto&) {});
   double volume = 0;
-  for (const auto& p : patches) {
-    const PatchSurface surface(p);
-    double sum = 0;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < m; ++j) sum += thesis_integrand(surface.evaluate(node(i, n), node(j, m)));
-    volume += sum / (static_cast<double>(n) * m);  // eq 23 (its ½ is in thesis_integrand)
-  }
+  for (double v : per_patch) volume += v;
   return volume;
 }
 
@@ -196,29 +210,38 @@ SliceVolume slice_volume(const std::vector<scene::Patch>& patches, int slices, i
   if (slices < 1) throw Error("slices", "needs at least one slice");
   if (grid < 1) throw Error("slices", "needs a tessellation grid of at least 1");
   const int count = static_cast<int>(patches.size());
-  // Sample every patch once.
-  std::vector<std::vector<Vec3>> samples(count);
+  const int side = grid + 1;
+  // Two passes over every patch's (grid + 1)² samples, one row of samples at a time, so that the
+  // memory does not grow with the patches or the grid squared: the z range first, then the
+  // sections. Each pass evaluates the same points in the same order, so the planes and the
+  // areas are those of one stored tessellation.
+  const auto sample_row = [&](const PatchSurface& surface, int a, std::vector<Vec3>& row) {
+    row.resize(static_cast<size_t>(side));
+    for (int b = 0; b <= grid; ++b)
+      row[static_cast<size_t>(b)] =
+          surface.point(static_cast<double>(a) / grid, static_cast<double>(b) / grid);
+  };
+  std::vector<double> lo(static_cast<size_t>(count)), hi(static_cast<size_t>(count));
   parallel_rows(
       count, 0,
-      [&](int k) {
-        const PatchSurface surface(patches[k]);
-        auto& s = samples[k];
-        s.resize((grid + 1) * (grid + 1));
-        for (int a = 0; a <= grid; ++a)
-          for (int b = 0; b <= grid; ++b)
-            s[a * (grid + 1) + b] =
-                surface.point(static_cast<double>(a) / grid, static_cast<double>(b) / grid);
+      [&, row = std::vector<Vec3>()](int k) mutable {
+        const PatchSurface surface(patches[static_cast<size_t>(k)]);
+        double l = std::numeric_limits<double>::infinity(), h = -l;
+        for (int a = 0; a <= grid; ++a) {
+          sample_row(surface, a, row);
+          for (const Vec3& q : row) l = std::min(l, q.z), h = std::max(h, q.z);
+        }
+        lo[static_cast<size_t>(k)] = l, hi[static_cast<size_t>(k)] = h;
       },
       [](auto&) {});
   SliceVolume out;
   out.slices = slices;
   out.z_min = std::numeric_limits<double>::infinity();
   out.z_max = -out.z_min;
-  for (const auto& s : samples)
-    for (const auto& q : s) {
-      out.z_min = std::min(out.z_min, q.z);
-      out.z_max = std::max(out.z_max, q.z);
-    }
+  for (int k = 0; k < count; ++k) {
+    out.z_min = std::min(out.z_min, lo[static_cast<size_t>(k)]);
+    out.z_max = std::max(out.z_max, hi[static_cast<size_t>(k)]);
+  }
   if (!(out.z_max > out.z_min)) return out;  // flat or empty: no volume
   const double h = (out.z_max - out.z_min) / slices, nudge = 1e-9 * (out.z_max - out.z_min);
   // Planes, sorted: trapezoid planes at the K + 1 interval ends (the two outermost nudged
@@ -234,8 +257,6 @@ SliceVolume slice_volume(const std::vector<scene::Patch>& patches, int slices, i
   std::vector<double> sorted(planes.size());
   for (size_t i = 0; i < order.size(); ++i) sorted[i] = planes[order[i]];
 
-  std::vector<double> area(planes.size(), 0.0);
-  std::mutex merge;
   auto triangle = [&](const Vec3& p0, const Vec3& p1, const Vec3& p2, std::vector<double>& acc) {
     const double lo = std::min({p0.z, p1.z, p2.z}), hi = std::max({p0.z, p1.z, p2.z});
     const Vec3 nrm = cross(p1 - p0, p2 - p0);
@@ -257,25 +278,42 @@ SliceVolume slice_volume(const std::vector<scene::Patch>& patches, int slices, i
       acc[it - sorted.begin()] += 0.5 * (a.x * b.y - b.x * a.y);  // shoelace
     }
   };
+  // Sums per block of consecutive patches, each block in patch order, the blocks added in order
+  // afterwards: the result does not depend on the threads. The blocks' sums take at most about
+  // kSliceSumBytes.
+  constexpr size_t kSliceSumBytes = size_t{32} << 20;
+  const int blocks = static_cast<int>(std::clamp<size_t>(
+      kSliceSumBytes / (planes.size() * sizeof(double)), 1, std::min<size_t>(count, 256)));
+  std::vector<std::vector<double>> per_block(static_cast<size_t>(blocks));
   parallel_rows(
-      count, 0,
-      [&, acc = std::vector<double>(planes.size(), 0.0)](int k) mutable {
-        const auto& s = samples[k];
-        for (int a = 0; a < grid; ++a)
-          for (int b = 0; b < grid; ++b) {
-            const Vec3& p00 = s[a * (grid + 1) + b];
-            const Vec3& p10 = s[(a + 1) * (grid + 1) + b];
-            const Vec3& p01 = s[a * (grid + 1) + b + 1];
-            const Vec3& p11 = s[(a + 1) * (grid + 1) + b + 1];
-            // Vertex order keeps the orientation of S_u × S_v.
-            triangle(p00, p10, p11, acc);
-            triangle(p00, p11, p01, acc);
+      blocks, 0,
+      [&, r0 = std::vector<Vec3>(), r1 = std::vector<Vec3>()](int block) mutable {
+        std::vector<double> acc(planes.size(), 0.0);
+        const int first = static_cast<int>(static_cast<long long>(block) * count / blocks);
+        const int last = static_cast<int>(static_cast<long long>(block + 1) * count / blocks);
+        for (int k = first; k < last; ++k) {
+          const PatchSurface surface(patches[static_cast<size_t>(k)]);
+          sample_row(surface, 0, r0);
+          for (int a = 0; a < grid; ++a) {
+            sample_row(surface, a + 1, r1);
+            for (int b = 0; b < grid; ++b) {
+              const Vec3& p00 = r0[static_cast<size_t>(b)];
+              const Vec3& p10 = r1[static_cast<size_t>(b)];
+              const Vec3& p01 = r0[static_cast<size_t>(b) + 1];
+              const Vec3& p11 = r1[static_cast<size_t>(b) + 1];
+              // Vertex order keeps the orientation of S_u × S_v.
+              triangle(p00, p10, p11, acc);
+              triangle(p00, p11, p01, acc);
+            }
+            std::swap(r0, r1);
           }
-        std::lock_guard lock(merge);
-        for (size_t i = 0; i < acc.size(); ++i) area[i] += acc[i];
-        std::fill(acc.begin(), acc.end(), 0.0);
+        }
+        per_block[static_cast<size_t>(block)] = std::move(acc);
       },
       [](auto&) {});
+  std::vector<double> area(planes.size(), 0.0);
+  for (const auto& acc : per_block)
+    for (size_t i = 0; i < acc.size(); ++i) area[i] += acc[i];
   std::vector<double> by_plane(planes.size());
   for (size_t i = 0; i < order.size(); ++i) by_plane[order[i]] = area[i];
   double trap = 0.5 * (by_plane[0] + by_plane[slices]);
@@ -285,6 +323,25 @@ SliceVolume slice_volume(const std::vector<scene::Patch>& patches, int slices, i
   for (int k = 0; k < slices; ++k) cav += by_plane[slices + 1 + k];
   out.cavalieri = h * cav;
   return out;
+}
+
+long long volume_work(const std::vector<scene::Patch>& patches, int slice_grid, int slices) {
+  // An evaluation costs its control points plus a fixed part (the bases), kEvaluationOverhead
+  // points' worth; cutting a triangle by the planes costs as much.
+  constexpr long long kEvaluationOverhead = 16;
+  const long long g = slice_grid, planes = 2LL * slices + 1;
+  long long work = 0;
+  for (const auto& p : patches) {
+    const long long points = static_cast<long long>(p.degree_u + 1) * (p.degree_v + 1);
+    const long long evaluation = points + kEvaluationOverhead;
+    const long long gauss = static_cast<long long>((3 * p.degree_u + 2) / 2) * ((3 * p.degree_v + 2) / 2);
+    work += points * points * points;                                 // exact sums (eq 25)
+    work += gauss * evaluation;                                       // Gauss–Legendre check
+    work += 2 * (10 * 10 + 100 * 100) * evaluation;                   // graphical, both node rules
+    work += 2 * (g + 1) * (g + 1) * evaluation;                       // slices: two passes
+    work += (2 * g * g + planes * 4 * g) * kEvaluationOverhead;       // triangles and crossings
+  }
+  return work;
 }
 
 ClosureReport check_closed_surface(const std::vector<scene::Patch>& patches,

@@ -54,6 +54,13 @@ struct SliceVolume {
 };
 SliceVolume slice_volume(const std::vector<scene::Patch>& patches, int slices, int grid = 256);
 
+// The work of `rpu volume` (app/volume_cmd.cpp) in units of one control point visited by an
+// evaluation or one term of the exact sums (limits::kMaxVolumeWork): the exact Bernstein sums
+// ((n+1)(m+1))³ per patch, the Gauss–Legendre check, the graphical integration at 10×10 and
+// 100×100 nodes with both node rules, and the slice method at `slice_grid` with `slices`
+// intervals (two passes of (grid+1)² samples, 2·grid² triangles, and the planes' crossings).
+long long volume_work(const std::vector<scene::Patch>& patches, int slice_grid, int slices = 10);
+
 // Closedness and orientation: every patch boundary edge (sampled at 9 points, collapsed edges
 // skipped) must be met by another patch edge traversed in the opposite direction (then the
 // normals agree across it). `problem` names the first failure ("patches[3]: edge v = 0 ...").

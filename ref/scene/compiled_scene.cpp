@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
+#include "common/limits.h"
 #include "scene/normals.h"
 
 namespace rpu::scene {
@@ -89,6 +91,47 @@ CompiledScene compile_scene(const Scene& scene) {
     out.primitives.push_back({Primitive::Kind::kPatch, static_cast<int>(k), scene.patches[k].color});
   out.patches = scene.patches;
   return out;
+}
+
+long long surface_screen_pairs(const CompiledScene& sc) {
+  const CameraFrame& cam = sc.camera;
+  const long long all = static_cast<long long>(cam.width) * cam.height;
+  long long pairs = 0;
+  for (const CompiledSurface& s : sc.surfaces) {
+    const Vec3 q = s.centre - cam.eye;
+    const double a = dot(cam.U, q), b = dot(cam.V, q), c = dot(cam.W, q), r = s.radius;
+    if (!(c - r > 0.0)) {  // the sphere reaches the eye plane: every pixel
+      pairs += all;
+      continue;
+    }
+    // The box [a ± r] × [b ± r] × [c ± r] holds the sphere; a/c and b/c over it are extreme at
+    // its corners.
+    const double x0 = std::min((a - r) / (c - r), (a - r) / (c + r));
+    const double x1 = std::max((a + r) / (c - r), (a + r) / (c + r));
+    const double y0 = std::min((b - r) / (c - r), (b - r) / (c + r));
+    const double y1 = std::max((b + r) / (c - r), (b + r) / (c + r));
+    // Screen columns: x = (i + 0.5 − width/2)·σ; rows: y = (height/2 − j − 0.5)·σ.
+    const double i0 = std::floor(x0 / cam.sigma + 0.5 * cam.width - 0.5);
+    const double i1 = std::ceil(x1 / cam.sigma + 0.5 * cam.width - 0.5);
+    const double j0 = std::floor(0.5 * cam.height - 0.5 - y1 / cam.sigma);
+    const double j1 = std::ceil(0.5 * cam.height - 0.5 - y0 / cam.sigma);
+    const double w = std::clamp(std::min(i1, cam.width - 1.0) - std::max(i0, 0.0) + 1, 0.0, double(cam.width));
+    const double h = std::clamp(std::min(j1, cam.height - 1.0) - std::max(j0, 0.0) + 1, 0.0, double(cam.height));
+    pairs += static_cast<long long>(w) * static_cast<long long>(h);
+  }
+  return pairs;
+}
+
+void check_surface_budget(const CompiledScene& sc) {
+  if (sc.surfaces.empty()) return;
+  const long long pixels = static_cast<long long>(sc.camera.width) * sc.camera.height;
+  const long long budget = std::max(limits::kMinPairBudget, limits::kSurfacePairsPerPixel * pixels);
+  const long long pairs = surface_screen_pairs(sc);
+  if (pairs > budget)
+    throw Error(sc.source + ": surfaces", fmt::format(
+        "the {} surfaces cover up to {} ray/surface pairs ({:.1f} per pixel at {}x{}); at most {} "
+        "(README, \"Limits\"); use fewer or smaller overlapping surfaces", sc.surfaces.size(),
+        pairs, double(pairs) / double(pixels), sc.camera.width, sc.camera.height, budget));
 }
 
 }  // namespace rpu::scene

@@ -54,4 +54,14 @@ struct CompiledScene {
 // consecutive points, a normal parallel to its segment, a zero normal.
 CompiledScene compile_scene(const Scene& scene);
 
+// The ray/surface pairs a render of the surfaces can meet: for every surface the pixels inside
+// the screen rectangle of its world bounding sphere (every pixel when the sphere reaches the
+// eye plane), summed. An upper bound on the pairs whose ray meets a bounding sphere.
+long long surface_screen_pairs(const CompiledScene& sc);
+
+// Refuses (rpu::Error naming the scene's surfaces) a scene whose surface_screen_pairs exceed
+// the budget of limits.h: kSurfacePairsPerPixel per pixel on average, at least kMinPairBudget.
+// The float tracers and the model check it before rendering (docs/surfaces.md, "Budgets").
+void check_surface_budget(const CompiledScene& sc);
+
 }  // namespace rpu::scene

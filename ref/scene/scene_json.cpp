@@ -275,7 +275,17 @@ std::vector<double> knot_vector(const Json& j, const Where& w, int degree, int s
   return k;
 }
 
-std::vector<Patch> patch_object(const Json& j, const Where& w) {
+// Refuses the scene's patch number `count` (1-based) past limits::kMaxPatches, at the JSON path
+// of the member that crosses it.
+void check_patch_count(size_t count, const Where& w) {
+  if (count > static_cast<size_t>(limits::kMaxPatches))
+    w.fail(fmt::format("too many patches: this is patch {} of the scene; at most {} patches per "
+                       "scene, a bezier_set's members counted one by one (README, \"Limits\")",
+                       count, limits::kMaxPatches));
+}
+
+// `before`: the patches of the objects before this one (the limit counts the whole scene).
+std::vector<Patch> patch_object(const Json& j, const Where& w, size_t before) {
   if (!j.is_object()) w.fail("expected an object, got " + describe(j));
   const Json& t = required(j, w, "type");
   if (!t.is_string()) w.key("type").fail("expected a string (bezier, bspline, nurbs or bezier_set), got " + describe(t));
@@ -310,8 +320,9 @@ std::vector<Patch> patch_object(const Json& j, const Where& w) {
     if (!set.is_array()) ws.fail("expected an array of patches (arrays of control points), got " + describe(set));
     if (set.empty()) ws.fail("expected at least one patch, got an empty array");
     std::vector<Patch> out;
-    out.reserve(set.size());
+    out.reserve(std::min<size_t>(set.size(), limits::kMaxPatches));
     for (size_t i = 0; i < set.size(); ++i) {
+      check_patch_count(before + i + 1, ws.index(i));
       out.push_back(p);
       out.back().control_points = control_points(set[i], ws.index(i), count, why);
     }
@@ -355,8 +366,10 @@ std::vector<Patch> patch_object(const Json& j, const Where& w) {
 std::vector<Patch> patches(const Json& j, const Where& w) {
   if (!j.is_array()) w.fail("expected an array of patches, got " + describe(j));
   std::vector<Patch> out;
-  for (size_t i = 0; i < j.size(); ++i)
-    for (Patch& p : patch_object(j[i], w.index(i))) out.push_back(std::move(p));
+  for (size_t i = 0; i < j.size(); ++i) {
+    check_patch_count(out.size() + 1, w.index(i));
+    for (Patch& p : patch_object(j[i], w.index(i), out.size())) out.push_back(std::move(p));
+  }
   return out;
 }
 
@@ -561,8 +574,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     scene.curves = array_of<Curve>(*c, top.key("curves"), "curves", curve);
   if (const Json* t = find_key(j, "textures"))
     scene.textures = array_of<Texture>(*t, top.key("textures"), "textures", texture);
-  if (const Json* s = find_key(j, "surfaces"))
+  if (const Json* s = find_key(j, "surfaces")) {
+    if (s->is_array() && s->size() > static_cast<size_t>(limits::kMaxSurfaces))
+      top.key("surfaces").fail(fmt::format("too many surfaces: {}; at most {} per scene (README, "
+                                           "\"Limits\")", s->size(), limits::kMaxSurfaces));
     scene.surfaces = array_of<Surface>(*s, top.key("surfaces"), "surfaces", surface);
+  }
   if (const Json* p = find_key(j, "patches")) scene.patches = patches(*p, top.key("patches"));
   return scene;
 }

@@ -214,6 +214,7 @@ void shade_textures(const CompiledScene& sc, const FloatOptions& o, int i, int j
 
 image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, RenderStats* stats) {
   if (o.method == Method::kIterative) check_ip_parameters(o.n, o.n1);
+  scene::check_surface_budget(sc);
   const CameraFrame& cam = sc.camera;
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(cam, sc.curve_segments, 8, o.binning);
