@@ -332,22 +332,23 @@ class Testbench {
   }
   // "<name>: matched N items in C cycles (details)"; returns 0.
   int pass(const char* fmt = nullptr, ...) __attribute__((format(printf, 2, 3))) {
-    std::va_list ap;
-    va_start(ap, fmt);
-    vpass(fmt, ap);
-    va_end(ap);
+    std::printf("%s: matched %ld items in %ld cycles", name_, matched_, cycle_);
+    if (fmt) {
+      std::va_list ap;
+      va_start(ap, fmt);
+      std::printf(" (");
+      std::vprintf(fmt, ap);
+      std::printf(")");
+      va_end(ap);
+    }
+    std::printf("\n");
     return 0;
   }
   // One run, then pass(details): a testbench's exit status.
-  template <class Items, class Item = typename Items::value_type>
-  [[gnu::format(printf, 4, 5)]] int check(const Items& items, const Stream<Top, Item>& s,
-                                          const char* fmt = nullptr, ...) {
-    if (!run(items, s)) return 1;
-    std::va_list ap;
-    va_start(ap, fmt);
-    vpass(fmt, ap);
-    va_end(ap);
-    return 0;
+  template <class Items, class Item = typename Items::value_type, class... Args>
+  int check(const Items& items, const Stream<Top, Item>& s, const char* fmt = nullptr,
+            Args... args) {
+    return run(items, s) ? pass(fmt, args...) : 1;
   }
 
   // Plays `items` (a vector or deque of Item) through the unit, reset first if it has not been;
@@ -485,15 +486,6 @@ class Testbench {
     (void)argv0;
     std::printf("%s: this build has no trace support (configure with -DRPU_SIM_TRACE=ON)\n", name_);
 #endif
-  }
-  void vpass(const char* fmt, std::va_list ap) {
-    std::printf("%s: matched %ld items in %ld cycles", name_, matched_, cycle_);
-    if (fmt) {
-      std::printf(" (");
-      std::vprintf(fmt, ap);
-      std::printf(")");
-    }
-    std::printf("\n");
   }
   void dump() {
 #if VM_TRACE_FST

@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     const ref::CaptureOut& w = it.want;
     const unsigned signs = w.signs[0] | (w.signs[1] << 1) | (w.signs[2] << 2) | (w.signs[3] << 3);
     o("hit", t.hit_o, w.hit, 1)("t_in_range", t.t_in_range_o, w.t_in_range, 1)("signs", t.signs_o, signs, 4);
-    o.s("depth", t.depth_o, w.depth, CW + 4 + EW + 2);
+    o.s("depth", t.depth_o, w.depth, p.depth_w());
   };
   s.what = [](const Item& it) {
     return "pixel (" + std::to_string(it.i) + ", " + std::to_string(it.j) + ")" +

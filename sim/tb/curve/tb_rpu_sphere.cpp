@@ -22,7 +22,7 @@ using fixed::i64;
 
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
-const int R2W = 2 * CW + 1, TcW = CW + 4, HcW = CW + 3, TW = kP.t_w();
+const int R2W = kP.r2_w(), TcW = CW + 4, HcW = CW + 3, TW = kP.t_w();
 constexpr int kInvSW = 7;
 
 enum Source { kCurve12, kRandomScene, kEdge, kCorner, kRandom, kSources };

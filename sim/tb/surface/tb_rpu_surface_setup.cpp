@@ -38,7 +38,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
-const int R2W = 2 * CW + 1, LW = kP.surf_w, MW = kP.surf_mant_w(), KF = kP.surf_const_frac();
+const int R2W = kP.r2_w(), LW = kP.surf_w, MW = kP.surf_mant_w(), KF = kP.surf_const_frac();
 const int KW = KF + 2, SF = kP.surf_cut_frac(), SW = SF + 1, AW = kP.angle_w;
 constexpr int kShW = 7;
 

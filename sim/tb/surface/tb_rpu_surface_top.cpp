@@ -30,7 +30,7 @@ namespace {
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, DirW = kP.dir_w(), LW = kP.surf_w, MW = kP.surf_mant_w();
 const int KF = kP.surf_const_frac(), AW = kP.angle_w, EdgeW = kP.edge_w();
-const int DepthW = CW + 4 + EdgeW + 2;
+const int DepthW = kP.depth_w();
 constexpr int kTurns = 8;  // rpu_indicator's turn lanes (the top's Turns default)
 const char* const* const kTypeName = sim::kSurfaceTypeName;
 
@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
   s.inputs = [](sim::Inputs& in, Vrpu_surface_top& t, const Item& it) {
     const ref::SurfaceDesc& d = *it.d;
     in.vec("vhat", t.vhat_i, it.ray.vhat, DirW).vec("bound_c0", t.bound_c0_i, d.bound.c0, CW);
-    in("bound_r2", t.bound_r2_i, d.bound.R2, 2 * CW + 1).vec("origin", t.origin_i, d.origin, CW);
+    in("bound_r2", t.bound_r2_i, d.bound.R2, kP.r2_w()).vec("origin", t.origin_i, d.origin, CW);
     in.fields("to_local", t.to_local_i, d.to_local, MW)("to_local_s", t.to_local_s_i, d.to_local_s, 7);
     in("y_min", t.y_min_i, d.y_min, LW)("y_max", t.y_max_i, d.y_max, LW);
     in("end_angle", t.end_angle_i, static_cast<i128>(d.end_angle), AW)("end_cos", t.end_cos_i, d.end_cos, KF + 2);
