@@ -11,6 +11,7 @@
 //   - random port values (eye, v̂, W over their whole formats, v̂_z biased small: every rejection
 //     path and the extreme widths; h_z at and around the quotient limit for the given v̂_z).
 // p0_valid, p0 (x, y, z), depth, the tag and the latency compared for every ray.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,17 @@ int main(int argc, char** argv) {
   const ref::HwParams p = sim::tb_params();
 
   std::vector<Camera> cams;
-  const auto add_camera = [&](const std::string& name, const scene::Scene& s) {
+  const auto add_camera = [&](const std::string& name, scene::Scene s) {
+    // Narrow direction formats: the compiler refuses a view whose pixel spans fewer than
+    // ref::Precision::kRefuse direction LSBs, so the frames shrink to 32 pixels on their longer
+    // side (as in tb_rpu_ray_gen), an odd height staying odd (the centre row's v̂_z = 0).
+    if (kFv < 16) {
+      scene::Camera& c = s.camera;
+      const int side = std::max(c.width, c.height), odd = c.height % 2;
+      c.width = std::max(1, c.width * 32 / side);
+      c.height = std::max(1, c.height * 32 / side);
+      if (odd && c.height % 2 == 0) ++c.height;
+    }
     cams.push_back({name, ref::quantize_scene(scene::compile_scene(s), p).camera});
     return static_cast<int>(cams.size()) - 1;
   };

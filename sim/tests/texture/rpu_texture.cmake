@@ -3,7 +3,8 @@
 # random port values. rpu_texture (with rpu_chord, rpu_guide_pair, rpu_sqrt, rpu_curve_point):
 # (p0, segment) pairs of ellipse6, polyline9 and airfield, p0 from the model's ray/plane point of
 # real pixels, segments from the classification grid around p0 and at random, plus descriptor
-# edges and exact comparison boundaries. Opt-in extras: a narrow ray/plane set, the texture unit
+# edges and exact comparison boundaries. Opt-in extras: a narrow ray/plane set (frames of 32
+# pixels: the compiler refuses finer ones at DirFrac 12), the texture unit
 # with pre-shifted guide roots (SqrtW 40; CoordW 16 with SqrtW 32 and a 3-bit tag).
 rpu_verilated_test(tb_rpu_ray_plane TOP rpu_ray_plane TB tb/texture/tb_rpu_ray_plane.cpp
                    PARAMS -GTagW=8
