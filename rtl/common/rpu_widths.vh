@@ -22,3 +22,6 @@
 // (rpu_guide_desc.vh); the layout headers check their totals against these.
 `define RPU_GSW(coordw, tfrac) (2 + `RPU_HW(coordw) + (coordw) + (tfrac))
 `define RPU_GDW(coordw, tfrac, unitfrac) (`RPU_GSW(coordw, tfrac) + 3 * `RPU_UW(unitfrac))
+
+// The indicator's part of a surface descriptor (rpu_surface_desc.vh), one word: 15·LW + 61 bits.
+`define RPU_SDW(surfw)       (15 * (surfw) + 61)

@@ -1,22 +1,23 @@
 // rpu_indicator: the inside bit of one point in a surface's local frame, for every primitive type,
 // twin of `rpu::ref::indicator_unit(params, surface, l, x_negative, last_turn, ovf, trace)`
 // (ref/model/surface/rpu_indicator.h; the indicators: docs/surfaces.md; formats: docs/fixed-point.md,
-// "Surfaces"). One configurable unit: `type_i` selects the primitive per point, so one pipeline
-// serves a scene that mixes them; the spiral's and snail's turns m = 0 .. Lanes−1 are parallel
-// lanes. Every type takes the same number of cycles (the longest, the relief's).
+// "Surfaces"). One configurable unit: the descriptor's type selects the primitive per point, so
+// one pipeline serves a scene that mixes them; the spiral's and snail's turns m = 0 .. Lanes−1
+// are parallel lanes. Every type takes the same number of cycles (the longest, the relief's).
 //
-// Ports (LW = SurfW, AW = AngleW, KF = LW, MW = LW + 2, CW = LW + 6 the CORDIC width):
-//   type_i        SurfaceType: 0 ellipsoid, 1 relief ellipsoid, 2 spiral, 3 snail, 4 rocket
-//                 (5..7: inside 0, every output 0)
+// Ports (LW = SurfW, AW = AngleW, KF = LW, MW = LW + 2, CorW = LW + 6 the CORDIC width):
 //   l_i           the point {z, y, x}, llsb, LW bits signed each
 //   x_negative_i, last_turn_i   the piece's azimuth branch (spiral, snail; unused otherwise)
-//   SurfaceDesc fields, each its own port (unused by the types that do not read them):
-//   full_turns_i  4 bits                       sx_i, sy_i, sz_i   Q(1.KF), KF+1 bits unsigned
-//   r2_i          2LW+1 bits unsigned, ≤ 2^(2LW) (the descriptor's round(m·2^(F+G))² with
+//   desc_i        the SurfaceDesc's indicator fields as one word (rpu_surface_desc.vh, DescW =
+//                 15·LW + 61 bits); a type does not read the fields it has no use for:
+//     type        SurfaceType: 0 ellipsoid, 1 relief ellipsoid, 2 spiral, 3 snail, 4 rocket
+//                 (5..7: inside 0, every output 0)
+//     full_turns  4 bits                       sx, sy, sz   Q(1.KF), KF+1 bits unsigned
+//     r2          2LW+1 bits unsigned, ≤ 2^(2LW) (the descriptor's round(m·2^(F+G))² with
 //                 m·2^F ≤ 2^(LW−2): its local box fills at most a quarter of the LW range)
-//   kd_i, ke2_i   Q(1.KF), KF+2 bits signed    rho0_i, rocket_a_i, rocket_b_i   llsb, LW signed
-//   a_turn_i, k_turn_i   llsb per turn, LW+8 bits signed
-//   y_angle, fin, cone   ScaledConst m · 2^-s: *_m_i MW bits signed, *_s_i 8 bits unsigned (s ≥ 0)
+//     kd, ke2     Q(1.KF), KF+2 bits signed    rho0, rocket_a, rocket_b   llsb, LW signed
+//     a_turn, k_turn   llsb per turn, LW+8 bits signed
+//     y_angle, fin, cone   ScaledConst m · 2^-s: m MW bits signed, s 8 bits unsigned (s ≥ 0)
 // Contract beyond the port widths: r2 ≤ 2^(2LW) and full_turns + last_turn ≤ Lanes. Within it the
 // outputs equal the twin's for every port value.
 // Outputs: inside_o; turn_inside_o (spiral, snail: the enabled lanes whose turn holds the point,
@@ -41,9 +42,9 @@
 //   T1       spiral: D0 = ρ − rho0 − r0, E0 = y − y0 (r0, y0 the products ≫ AW); P ≫ 8·(s ≫ 3)
 //   T2       spiral lane m: ρ − ρ_a = D0 − m·a_turn, y − y_a = E0 − m·k_turn (m·X as at most two
 //            shifted terms: 3 = 2 + 1, 5 = 4 + 1, 6 = 4 + 2, 7 = 8 − 1); P ≫ (s mod 8)
-//   T3       the CORDIC inputs saturated to CW − 1 bits; the rotation angles 4ψ (spiral),
+//   T3       the CORDIC inputs saturated to CorW − 1 bits; the rotation angles 4ψ (spiral),
 //            10φ ± 9y (relief, lanes 0 and 1: rotations of (ke2, 0)), 5ψ (rocket, lane 0: a
-//            rotation of (Y, 0)); Y saturated to CW + 1 bits (exact for ρ < r, see below)
+//            rotation of (Y, 0)); Y saturated to CorW + 1 bits (exact for ρ < r, see below)
 //   Tr       Lanes rpu_cordic rotations
 //   back end, in parallel:
 //     spiral   (u·sx, w·sy) ≫ (KF − G); each clamped (|·| ≥ 2^LW: outside, as r2 ≤ 2^(2LW));
@@ -60,10 +61,11 @@
 //              the cone's (y − b)·cone on the cone); ρ < r
 //   output   the type's bit, lanes, angle, ρ, overflow; registered
 //
-// Y = floor(y·m·2^-s) is exact in PW bits; the unit keeps it saturated to CW + 1 bits. That
-// leaves ρ < r unchanged: with |Y| ≥ 2^CW − 1, r is below 0 (Y > 0) or above 2^(CW−1) > ρ
-// (Y < 0) either way, since |a| < 2^(LW−1) and the rotated fin term is at most 2^(CW−2)·(1 + ε).
+// Y = floor(y·m·2^-s) is exact in PW bits; the unit keeps it saturated to CorW + 1 bits. That
+// leaves ρ < r unchanged: with |Y| ≥ 2^CorW − 1, r is below 0 (Y > 0) or above 2^(CorW−1) > ρ
+// (Y < 0) either way, since |a| < 2^(LW−1) and the rotated fin term is at most 2^(CorW−2)·(1 + ε).
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_indicator #(
   parameter integer SurfW  = 24,  // LW: signed width of surface-local coordinates (16..36)
@@ -74,27 +76,28 @@ module rpu_indicator #(
   parameter integer KF     = SurfW,          // fraction bits of the Q(1.KF) constants
   parameter integer MW     = SurfW + 2,      // mantissa bits of the ScaledConst constants
   parameter integer TurnW  = SurfW + 8,      // a_turn, k_turn
-  parameter integer CW     = SurfW + 6,      // the CORDIC width LW + G + 4 (rho_o)
-  parameter integer R2W    = 2 * SurfW + 1   // r2, unsigned
+  parameter integer CorW   = SurfW + 6,      // the CORDIC width LW + G + 4 (rho_o)
+  parameter integer R2W    = 2 * SurfW + 1,  // r2, unsigned
+  parameter integer DescW  = `RPU_SDW(SurfW) // the descriptor word (rpu_surface_desc.vh)
 ) (
   input  wire                 clk_i,
   input  wire                 rst_ni,
   input  wire                 valid_i,
-  input  wire [2:0]           type_i,
   input  wire [3*SurfW-1:0]   l_i,
   input  wire                 x_negative_i,
   input  wire                 last_turn_i,
-`include "rpu_surface_ind_ports.vh"
+  input  wire [DescW-1:0]     desc_i,
   input  wire [TagW-1:0]      tag_i,
   output wire                 valid_o,
   output wire                 inside_o,
   output wire [Lanes-1:0]     turn_inside_o,
   output wire [AngleW-1:0]    angle_o,
-  output wire [CW-1:0]        rho_o,
+  output wire [CorW-1:0]      rho_o,
   output wire                 ovf_o,
   output wire [TagW-1:0]      tag_o
 );
 `include "rpu_mul_latency.vh"
+`include "rpu_surface_desc.vh"
   localparam integer LW   = SurfW;
   localparam integer AW   = AngleW;
   localparam integer G    = 2;             // guard bits of the scaled coordinates (kSurfGuard)
@@ -103,18 +106,18 @@ module rpu_indicator #(
   localparam integer OPW  = LW + 1;        // the constant product's operand: y or y − b
   localparam integer PW   = OPW + MW;      // the constant product P, exact
   localparam integer SCW  = $clog2(PW);    // its shift, clamped to PW − 1
-  localparam integer YW   = CW + 1;        // Y = P ≫ s, saturated (rocket)
+  localparam integer YW   = CorW + 1;      // Y = P ≫ s, saturated (rocket)
   localparam integer PSW  = AW + 2;        // ψ unwrapped: [−¼, 1¼) turn
   localparam integer R0W  = TurnW + 2;     // r0 = ψ_u·a_turn ≫ AW, y0 = ψ_u·k_turn ≫ AW
   localparam integer SPW  = TurnW + 4;     // spiral lane offsets ρ − ρ_a, y − y_a (< 2^(TurnW+3))
   localparam integer HW   = TurnW + 4;     // snail h_j = 2r0 + j·a_turn (< 2^(TurnW+3))
   localparam integer PJW  = TurnW + 8;     // snail P_j = ρ − j·h_{j−1} (< 2^(TurnW+7))
   localparam integer HIW  = PJW - 1;       // |P_j|
-  localparam integer SCLW = CW + G + 2;    // spiral u·sx ≫ (KF − G)
+  localparam integer SCLW = CorW + G + 2;  // spiral u·sx ≫ (KF − G)
   localparam integer SclHiW = SCLW - LW;    // its bits from LW up
   localparam integer XsHiW  = XSW - LW;     // x·sx's bits from LW up
-  localparam integer KW   = CW + 2;        // relief k' = kd + y1 + y2 (|k'| < 2^(CW+1))
-  localparam integer K2W  = 2 * KW - 2 - KF;  // floor(k'²·2^-KF)
+  localparam integer KpW  = CorW + 2;      // relief k' = kd + y1 + y2 (|k'| < 2^(CorW+1))
+  localparam integer K2W  = 2 * KpW - 2 - KF;  // floor(k'²·2^-KF)
   localparam integer D2W  = 2 * LW + 1;    // s²m² = r2 − (y·sy)², 0 < · ≤ 2^(2LW) where used
   localparam integer RHW  = K2W + D2W - KF;   // the relief's right-hand side
   localparam integer LHW  = 2 * XSW;      // (x·sx)² + (z·sz)² < 2^(2LW+5)
@@ -128,8 +131,8 @@ module rpu_indicator #(
       $fatal(1, "rpu_indicator: AngleW must be <= SurfW + 10 (CORDIC stages <= its width + 4)");
     if (Lanes < 2 || Lanes > 8) $fatal(1, "rpu_indicator: Lanes must be in 2..8");
     if (TagW < 1) $fatal(1, "rpu_indicator: TagW must be >= 1");
-    if (KF != SurfW || MW != SurfW + 2 || TurnW != SurfW + 8 || CW != SurfW + 6 ||
-        R2W != 2 * SurfW + 1)
+    if (KF != SurfW || MW != SurfW + 2 || TurnW != SurfW + 8 || CorW != SurfW + 6 ||
+        R2W != 2 * SurfW + 1 || DescW != SdW)
       $fatal(1, "rpu_indicator: derived parameters must not be overridden");
   end
 
@@ -137,11 +140,11 @@ module rpu_indicator #(
   localparam integer LSx  = `RPU_MUL_LAT(LW, KF + 2, 1);   // x·sx
   localparam integer LCp  = `RPU_MUL_LAT(OPW, MW, 1);      // y·m
   localparam integer LF   = LSx > LCp ? LSx : LCp;
-  localparam integer LSc  = `RPU_MUL_LAT(CW, KF + 2, 1);   // spiral u·sx
+  localparam integer LSc  = `RPU_MUL_LAT(CorW, KF + 2, 1); // spiral u·sx
   localparam integer LQ   = `RPU_MUL_LAT(LW + 1, LW + 1, 1);  // clamped squares
   localparam integer LX   = `RPU_MUL_LAT(XSW, XSW, 1);     // (x·sx)²
   localparam integer LXY  = LX > 1 + LQ ? LX : 1 + LQ;                 // all three squares
-  localparam integer LK   = `RPU_MUL_LAT(KW, KW, 1);       // k'²
+  localparam integer LK   = `RPU_MUL_LAT(KpW, KpW, 1);     // k'²
   localparam integer LKD  = `RPU_MUL_LAT(K2W, D2W, 0);     // k2·s²m²
   localparam integer LN   = `RPU_MUL_LAT(LW, HIW, 0);      // snail |P|·|P|
   // The back end, in cycles after the rotations (the registered bit of each type):
@@ -178,21 +181,41 @@ module rpu_indicator #(
   // ===============================================================================================
   // E1: inputs registered; the constant product's operand; the rocket's region; lane enables.
   // ===============================================================================================
+  // The descriptor's fields (rpu_surface_desc.vh; formats in the header above).
+  wire [2:0] sd_type = desc_i[SdTypeO +: 3];
+  wire [3:0] sd_full_turns = desc_i[SdFullO +: 4];
+  wire [KF:0]     sd_sx = desc_i[SdSxO +: KF + 1];
+  wire [KF:0]     sd_sy = desc_i[SdSyO +: KF + 1];
+  wire [KF:0]     sd_sz = desc_i[SdSzO +: KF + 1];
+  wire [R2W-1:0] sd_r2 = desc_i[SdR2O +: R2W];
+  wire [KF+1:0]   sd_kd = desc_i[SdKdO +: KF + 2];
+  wire [KF+1:0]   sd_ke2 = desc_i[SdKe2O +: KF + 2];
+  wire [MW-1:0] sd_y_angle_m = desc_i[SdYamO +: MW];
+  wire [7:0] sd_y_angle_s = desc_i[SdYasO +: 8];
+  wire [LW-1:0] sd_rho0 = desc_i[SdRho0O +: LW];
+  wire [TurnW-1:0] sd_a_turn = desc_i[SdAturnO +: TurnW];
+  wire [TurnW-1:0] sd_k_turn = desc_i[SdKturnO +: TurnW];
+  wire [LW-1:0] sd_rocket_a = desc_i[SdRaO +: LW];
+  wire [LW-1:0] sd_rocket_b = desc_i[SdRbO +: LW];
+  wire [MW-1:0] sd_fin_m = desc_i[SdFinmO +: MW];
+  wire [7:0] sd_fin_s = desc_i[SdFinsO +: 8];
+  wire [MW-1:0] sd_cone_m = desc_i[SdConemO +: MW];
+  wire [7:0] sd_cone_s = desc_i[SdConesO +: 8];
   wire [LW-1:0] lx = l_i[0*LW +: LW];
   wire [LW-1:0] ly = l_i[1*LW +: LW];
   wire [LW-1:0] lz = l_i[2*LW +: LW];
-  wire [4:0]    typ = {type_i == 3'd4, type_i == 3'd3, type_i == 3'd2, type_i == 3'd1,
-                       type_i == 3'd0};  // one-hot {rocket, snail, spiral, relief, ellipsoid}
+  wire [4:0]    typ = {sd_type == 3'd4, sd_type == 3'd3, sd_type == 3'd2, sd_type == 3'd1,
+                       sd_type == 3'd0};  // one-hot {rocket, snail, spiral, relief, ellipsoid}
   wire [OPW-1:0] ly_x  = {ly[LW-1], ly};
-  wire [OPW-1:0] rb_x  = {rocket_b_i[LW-1], rocket_b_i};
+  wire [OPW-1:0] rb_x  = {sd_rocket_b[LW-1], sd_rocket_b};
   wire [OPW-1:0] ymb   = ly_x - rb_x;  // y − b, exact
   wire [OPW-1:0] bmy   = rb_x - ly_x;  // b − y: negative ⇔ y > b
   wire           fins  = ly[LW-1] | ~|ly;          // y ≤ 0
   wire           cone  = ~fins & bmy[OPW-1];       // y > b (> 0)
   wire           cyl   = ~fins & ~bmy[OPW-1];      // 0 < y ≤ b
   wire [OPW-1:0] op    = typ[4] && cone ? ymb : ly_x;
-  wire [MW-1:0]  cm    = typ[1] ? y_angle_m_i : fins ? fin_m_i : cone_m_i;
-  wire [7:0]     cs    = typ[1] ? y_angle_s_i : fins ? fin_s_i : cone_s_i;
+  wire [MW-1:0]  cm    = typ[1] ? sd_y_angle_m : fins ? sd_fin_m : sd_cone_m;
+  wire [7:0]     cs    = typ[1] ? sd_y_angle_s : fins ? sd_fin_s : sd_cone_s;
   // A shift by PW − 1 or more leaves the sign in every bit, as by PW − 1.
   localparam integer   ScMaxI = PW - 1;
   localparam [7:0]     ScMax8 = ScMaxI[7:0];
@@ -202,7 +225,7 @@ module rpu_indicator #(
   generate
     for (m = 0; m < Lanes; m = m + 1) begin : g_en
       localparam [3:0] M4 = m;
-      assign en[m] = (full_turns_i > M4) | (last_turn_i & (full_turns_i == M4));
+      assign en[m] = (sd_full_turns > M4) | (last_turn_i & (sd_full_turns == M4));
     end
   endgenerate
 
@@ -220,8 +243,8 @@ module rpu_indicator #(
   wire [MW-1:0]    s1_cm_q;
   rpu_stage #(.W(C1W + 3*LW + 3*SkW + OPW + MW)) u_e1 (
     .clk_i, .rst_ni, .valid_i,
-    .d_i({tag_i, typ, x_negative_i, en, lx, ly, lz, rho0_i, a_turn_i, k_turn_i, sx_i, sy_i, r2_i,
-          kd_i, ke2_i, rocket_a_i, sc, fins, cyl, l_i, sz_i, sy_i, sx_i, op, cm}),
+    .d_i({tag_i, typ, x_negative_i, en, lx, ly, lz, sd_rho0, sd_a_turn, sd_k_turn, sd_sx, sd_sy,
+          sd_r2, sd_kd, sd_ke2, sd_rocket_a, sc, fins, cyl, l_i, sd_sz, sd_sy, sd_sx, op, cm}),
     .valid_o(s1_valid_q), .q_o({s1_ctx_q, s1_l_q, s1_s_q, s1_op_q, s1_cm_q}));
   wire unused_e1 = ^cs[7:SCW];
 
@@ -264,17 +287,19 @@ module rpu_indicator #(
 
   // ===============================================================================================
   // Tv: vectoring of (z·sz, x·sx) (relief: φ = atan2(x/a, z/c)) or (z, x): ψ, ρ. Never saturated:
-  // |x·sx| < 2^(LW+2) ≤ 2^(CW−2).
+  // |x·sx| < 2^(LW+2) ≤ 2^(CorW−2).
   // ===============================================================================================
   localparam integer C2W = TagW + 5 + 1 + Lanes + 3 * LW + 2 * TurnW + 2 * (KF + 1) + R2W +
                            2 * (KF + 2) + SCW + 2 + 3 * XSW + PW;
-  wire [CW-1:0] vx_in = f_typ[1] ? {{(CW - XSW){zs[XSW-1]}}, zs} : {{(CW - LW){f_z[LW-1]}}, f_z};
-  wire [CW-1:0] vy_in = f_typ[1] ? {{(CW - XSW){xs[XSW-1]}}, xs} : {{(CW - LW){f_x[LW-1]}}, f_x};
+  wire [CorW-1:0] vx_in = f_typ[1] ? {{(CorW - XSW){zs[XSW-1]}}, zs}
+                                   : {{(CorW - LW){f_z[LW-1]}}, f_z};
+  wire [CorW-1:0] vy_in = f_typ[1] ? {{(CorW - XSW){xs[XSW-1]}}, xs}
+                                   : {{(CorW - LW){f_x[LW-1]}}, f_x};
   wire          v_valid;
-  wire [CW-1:0] v_mag, v_y_unused;
+  wire [CorW-1:0] v_mag, v_y_unused;
   wire [AW-1:0] v_angle;
   wire [C2W-1:0] v_ctx;
-  rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(0), .TagW(C2W)) u_vec (
+  rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(0), .TagW(C2W)) u_vec (
     .clk_i, .rst_ni, .valid_i(f_valid), .x_i(vx_in), .y_i(vy_in), .angle_i({AW{1'b0}}),
     .tag_i({f_tag, f_typ, f_en, f_y, f_rho0, f_sx, f_sy, f_r2, f_kd, f_ke2, f_ra, f_sc, f_fins,
             f_cyl, xs, ys, zs, pcp, f_at, f_kt, f_xneg}),
@@ -293,7 +318,7 @@ module rpu_indicator #(
   // ===============================================================================================
   // LT: ψ_u·a_turn and ψ_u·k_turn (exact); the context rides in the first product's tag.
   // ===============================================================================================
-  localparam integer C3W = C2W - 1 + AW + CW;
+  localparam integer C3W = C2W - 1 + AW + CorW;
   localparam integer TPW = PSW + TurnW;
   wire [TPW-1:0] pat, pkt;
   wire           t_valid;
@@ -317,7 +342,7 @@ module rpu_indicator #(
   wire [XSW-1:0]   t_xs, t_ys, t_zs;
   wire [PW-1:0]    t_p;
   wire [AW-1:0]    t_angle;
-  wire [CW-1:0]    t_rho;
+  wire [CorW-1:0]    t_rho;
   assign {t_tag, t_typ, t_en, t_y, t_rho0, t_sx, t_sy, t_r2, t_kd, t_ke2, t_ra, t_sc, t_fins, t_cyl,
           t_xs, t_ys, t_zs, t_p, t_at, t_kt, t_angle, t_rho} = t_ctx;
   // r0 = floor(a_turn·ψ_u·2^-AW) (= a·ψ), y0 = floor(k_turn·ψ_u·2^-AW): the products' top bits.
@@ -329,7 +354,7 @@ module rpu_indicator #(
   // ===============================================================================================
   wire [SPW-1:0] d0, e0;
   rpu_add3 #(.W(SPW), .NegB(1), .NegC(1), .Cin(2)) u_d0 (
-    .a_i({{(SPW - CW){1'b0}}, t_rho}), .b_i({{(SPW - LW){t_rho0[LW-1]}}, t_rho0}),
+    .a_i({{(SPW - CorW){1'b0}}, t_rho}), .b_i({{(SPW - LW){t_rho0[LW-1]}}, t_rho0}),
     .c_i({{(SPW - R0W){t_r0[R0W-1]}}, t_r0}), .s_o(d0));
   assign e0 = {{(SPW - LW){t_y[LW-1]}}, t_y} - {{(SPW - R0W){t_y0[R0W-1]}}, t_y0};
   wire signed [PW-1:0] coarse = $signed(t_p) >>> {t_sc[SCW-1:3], 3'b000};
@@ -349,7 +374,7 @@ module rpu_indicator #(
   // angle, ρ, fins, cylinder} three cycles on; what T3 reads two cycles on; a_turn and r0 two
   // cycles on from T1.
   localparam integer CDW = TagW + 5 + Lanes + LW + 2 * (KF + 1) + R2W + (KF + 2) + LW + 3 * XSW +
-                           AW + CW + 2;
+                           AW + CorW + 2;
   wire [CDW-1:0] t3_ctx;
   rpu_delay #(.W(CDW), .D(3)) u_dl_t3 (
     .clk_i, .valid_i(t_valid),
@@ -402,24 +427,24 @@ module rpu_indicator #(
     .valid_o(t2_valid_q), .q_o({t2_dr_q, t2_dy_q, t2_r_q}));
 
   // ===============================================================================================
-  // T3: the rotation inputs. Saturation to CW − 1 bits (cordic_in): |v| ≤ 2^(CW−2) passes.
+  // T3: the rotation inputs. Saturation to CorW − 1 bits (cordic_in): |v| ≤ 2^(CorW−2) passes.
   // ===============================================================================================
-  localparam integer SatTop = CW - 2;  // bits SatTop and up must equal the sign
+  localparam integer SatTop = CorW - 2;  // bits SatTop and up must equal the sign
   localparam integer RHiW   = PW - SatTop;   // the product bits from SatTop up
   localparam integer SpHiW  = SPW - SatTop;  // the spiral offsets' bits from SatTop up
-  wire [CW-2:0] sat_max = {1'b0, {(CW - 2){1'b1}}};
-  wire [CW-2:0] sat_min = {1'b1, {(CW - 2){1'b0}}};
-  wire [Lanes*CW-1:0] t3_rx, t3_ry;
+  wire [CorW-2:0] sat_max = {1'b0, {(CorW - 2){1'b1}}};
+  wire [CorW-2:0] sat_min = {1'b1, {(CorW - 2){1'b0}}};
+  wire [Lanes*CorW-1:0] t3_rx, t3_ry;
   wire [Lanes*AW-1:0] t3_ra;
   wire [Lanes-1:0]    t3_sat;
-  // Y (rocket): saturated to YW bits (exact for ρ < r) and to CW − 1 bits (the CORDIC input).
+  // Y (rocket): saturated to YW bits (exact for ρ < r) and to CorW − 1 bits (the CORDIC input).
   wire [PW-YW:0]   r_hi_y = t2_r_q[PW-1:YW-1];
   wire [RHiW-1:0] r_hi_c = t2_r_q[PW-1:SatTop];
   wire             r_neg  = t2_r_q[PW-1];
   wire             fit_y  = &r_hi_y | ~|r_hi_y;
   wire             fit_c  = &r_hi_c | ~|r_hi_c;
   wire [YW-1:0]    ysat   = fit_y ? t2_r_q[YW-1:0] : {r_neg, {(YW - 1){~r_neg}}};
-  wire [CW-2:0]    ycin   = fit_c ? t2_r_q[CW-2:0] : r_neg ? sat_min : sat_max;
+  wire [CorW-2:0]    ycin   = fit_c ? t2_r_q[CorW-2:0] : r_neg ? sat_min : sat_max;
   // The angles: 4ψ (spiral), 5ψ (rocket), 10φ ± 9y (relief), modulo a turn.
   wire [AW-1:0] a9  = t2_r_q[AW-1:0];
   wire [AW-1:0] a4  = {t2_angle[AW-3:0], 2'b00};
@@ -431,8 +456,8 @@ module rpu_indicator #(
     .a_i(a8), .b_i(a2), .c_i(a9), .s_o(ang_p));
   rpu_add3 #(.W(AW), .NegB(0), .NegC(1), .Cin(1)) u_angm (
     .a_i(a8), .b_i(a2), .c_i(a9), .s_o(ang_m));
-  wire [CW-1:0] ke2_x  = {{(CW - KF - 2){t2_ke2[KF+1]}}, t2_ke2};
-  wire [CW-1:0] ycin_x = {ycin[CW-2], ycin};
+  wire [CorW-1:0] ke2_x  = {{(CorW - KF - 2){t2_ke2[KF+1]}}, t2_ke2};
+  wire [CorW-1:0] ycin_x = {ycin[CorW-2], ycin};
   wire          rel2   = t2_typ[1];
   wire          roc2   = t2_typ[4];
   generate
@@ -443,40 +468,40 @@ module rpu_indicator #(
       wire [SpHiW-1:0] hy = dy[SPW-1:SatTop];
       wire fr = &hr | ~|hr;
       wire fy = &hy | ~|hy;
-      wire [CW-2:0] sr = fr ? dr[CW-2:0] : dr[SPW-1] ? sat_min : sat_max;
-      wire [CW-2:0] sy = fy ? dy[CW-2:0] : dy[SPW-1] ? sat_min : sat_max;
-      wire [CW-1:0] sr_x = {sr[CW-2], sr};
-      wire [CW-1:0] sy_x = {sy[CW-2], sy};
-      wire [CW-1:0] in_x, in_y;
+      wire [CorW-2:0] sr = fr ? dr[CorW-2:0] : dr[SPW-1] ? sat_min : sat_max;
+      wire [CorW-2:0] sy = fy ? dy[CorW-2:0] : dy[SPW-1] ? sat_min : sat_max;
+      wire [CorW-1:0] sr_x = {sr[CorW-2], sr};
+      wire [CorW-1:0] sy_x = {sy[CorW-2], sy};
+      wire [CorW-1:0] in_x, in_y;
       wire [AW-1:0] in_a;
       if (m == 0) begin : g_l0  // relief (ke2, 0) by 10φ + 9y; rocket (Y, 0) by 5ψ
         assign in_x = rel2 ? ke2_x : roc2 ? ycin_x : sr_x;
-        assign in_y = rel2 || roc2 ? {CW{1'b0}} : sy_x;
+        assign in_y = rel2 || roc2 ? {CorW{1'b0}} : sy_x;
         assign in_a = rel2 ? ang_p : roc2 ? a5 : a4;
       end else if (m == 1) begin : g_l1  // relief (ke2, 0) by 10φ − 9y
         assign in_x = rel2 ? ke2_x : sr_x;
-        assign in_y = rel2 ? {CW{1'b0}} : sy_x;
+        assign in_y = rel2 ? {CorW{1'b0}} : sy_x;
         assign in_a = rel2 ? ang_m : a4;
       end else begin : g_ln
         assign in_x = sr_x;
         assign in_y = sy_x;
         assign in_a = a4;
       end
-      assign t3_rx[m*CW +: CW] = in_x;
-      assign t3_ry[m*CW +: CW] = in_y;
+      assign t3_rx[m*CorW +: CorW] = in_x;
+      assign t3_ry[m*CorW +: CorW] = in_y;
       assign t3_ra[m*AW +: AW] = in_a;
       assign t3_sat[m]         = t2_en[m] & ~(fr & fy);
     end
   endgenerate
   wire unused_t2 = ^{t2_typ[0], t2_typ[3:2]};
   wire                t3_valid_q;
-  wire [Lanes*CW-1:0] t3_rx_q, t3_ry_q;
+  wire [Lanes*CorW-1:0] t3_rx_q, t3_ry_q;
   wire [Lanes*AW-1:0] t3_ra_q;
   wire [Lanes-1:0]    t3_sat_q;
   wire [YW-1:0]       t3_ysat_q;
   wire                t3_ovf_roc_q;
   // The twin saturates Y on the fins only.
-  rpu_stage #(.W(Lanes*(2*CW + AW + 1) + YW + 1)) u_t3 (
+  rpu_stage #(.W(Lanes*(2*CorW + AW + 1) + YW + 1)) u_t3 (
     .clk_i, .rst_ni, .valid_i(t2_valid_q),
     .d_i({t3_rx, t3_ry, t3_ra, t3_sat, ysat, roc2 & t2_fins & ~fit_c}),
     .valid_o(t3_valid_q), .q_o({t3_rx_q, t3_ry_q, t3_ra_q, t3_sat_q, t3_ysat_q, t3_ovf_roc_q}));
@@ -489,7 +514,7 @@ module rpu_indicator #(
   // Tr: the rotations, one per lane; the context rides in lane 0's tag.
   // ===============================================================================================
   localparam integer C4W = CDW + R0W + TurnW + YW + 1;
-  wire [Lanes*CW-1:0] rot_x, rot_y;
+  wire [Lanes*CorW-1:0] rot_x, rot_y;
   wire                r_valid;
   wire [C4W-1:0]      r_ctx;
   generate
@@ -497,19 +522,19 @@ module rpu_indicator #(
       wire          vo;
       wire [AW-1:0] ao;
       if (m == 0) begin : g_ctl
-        rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(1), .TagW(C4W)) u_rot (
-          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CW +: CW]),
-          .y_i(t3_ry_q[m*CW +: CW]), .angle_i(t3_ra_q[m*AW +: AW]),
+        rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(1), .TagW(C4W)) u_rot (
+          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CorW +: CorW]),
+          .y_i(t3_ry_q[m*CorW +: CorW]), .angle_i(t3_ra_q[m*AW +: AW]),
           .tag_i({t3_ctx, t3_r0, t3_at, t3_ysat_q, q_ovf}),
-          .valid_o(vo), .x_o(rot_x[m*CW +: CW]), .y_o(rot_y[m*CW +: CW]), .angle_o(ao),
+          .valid_o(vo), .x_o(rot_x[m*CorW +: CorW]), .y_o(rot_y[m*CorW +: CorW]), .angle_o(ao),
           .tag_o(r_ctx));
         assign r_valid = vo;
       end else begin : g_lane
         wire to;
-        rpu_cordic #(.W(CW), .AW(AW), .Iters(AW), .Mode(1), .TagW(1)) u_rot (
-          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CW +: CW]),
-          .y_i(t3_ry_q[m*CW +: CW]), .angle_i(t3_ra_q[m*AW +: AW]), .tag_i(1'b0),
-          .valid_o(vo), .x_o(rot_x[m*CW +: CW]), .y_o(rot_y[m*CW +: CW]), .angle_o(ao),
+        rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(1), .TagW(1)) u_rot (
+          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CorW +: CorW]),
+          .y_i(t3_ry_q[m*CorW +: CorW]), .angle_i(t3_ra_q[m*AW +: AW]), .tag_i(1'b0),
+          .valid_o(vo), .x_o(rot_x[m*CorW +: CorW]), .y_o(rot_y[m*CorW +: CorW]), .angle_o(ao),
           .tag_o(to));
         wire unused_lane = ^{vo, to};
       end
@@ -526,7 +551,7 @@ module rpu_indicator #(
   wire [KF+1:0]    r_kd;
   wire [XSW-1:0]   r_xs, r_ys, r_zs;
   wire [AW-1:0]    r_angle;
-  wire [CW-1:0]    r_rho;
+  wire [CorW-1:0]    r_rho;
   wire             r_fins, r_cyl, r_ovf;
   wire [R0W-1:0]   r_r0;
   wire [TurnW-1:0] r_at;
@@ -546,7 +571,7 @@ module rpu_indicator #(
   // ===============================================================================================
   // Back end: spiral lanes. (u·sx, w·sy) ≫ (KF − G); clamped; squared; r2 − 1 − A² − B² ≥ 0.
   // ===============================================================================================
-  localparam integer ScPW = CW + KF + 2;
+  localparam integer ScPW = CorW + KF + 2;
   wire [Lanes-1:0] sp_bit;
   wire [Lanes-1:0] sp_en;
   wire [R2W-1:0]   sp_r2;
@@ -556,11 +581,11 @@ module rpu_indicator #(
     for (m = 0; m < Lanes; m = m + 1) begin : g_sp
       wire [ScPW-1:0] pu, pw;
       wire            v1, v2, t1, t2;
-      rpu_mul #(.AW(CW), .BW(KF + 2), .Signed(1), .TagW(1)) u_su (
-        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_x[m*CW +: CW]), .b_i({1'b0, r_sx}),
+      rpu_mul #(.AW(CorW), .BW(KF + 2), .Signed(1), .TagW(1)) u_su (
+        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_x[m*CorW +: CorW]), .b_i({1'b0, r_sx}),
         .tag_i(1'b0), .valid_o(v1), .p_o(pu), .tag_o(t1));
-      rpu_mul #(.AW(CW), .BW(KF + 2), .Signed(1), .TagW(1)) u_sw (
-        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_y[m*CW +: CW]), .b_i({1'b0, r_sy}),
+      rpu_mul #(.AW(CorW), .BW(KF + 2), .Signed(1), .TagW(1)) u_sw (
+        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_y[m*CorW +: CorW]), .b_i({1'b0, r_sy}),
         .tag_i(1'b0), .valid_o(v2), .p_o(pw), .tag_o(t2));
       // u·sx ≫ (KF − G), SCLW bits; it squares to ≥ 2^(2LW) ≥ r2 (outside) unless it fits LW + 1
       // bits signed, so only those are squared.
@@ -615,10 +640,10 @@ module rpu_indicator #(
       always @(posedge clk_i) sn_h_q[m*HW +: HW] <= h;
     end
   endgenerate
-  wire [CW-1:0] sn_rho1;
-  rpu_delay #(.W(CW), .D(1)) u_dl_rho1 (
+  wire [CorW-1:0] sn_rho1;
+  rpu_delay #(.W(CorW), .D(1)) u_dl_rho1 (
     .clk_i, .valid_i(vr[0]), .d_i(r_rho), .d_o(sn_rho1));
-  wire [PJW-1:0] rho_p = {{(PJW - CW){1'b0}}, sn_rho1};
+  wire [PJW-1:0] rho_p = {{(PJW - CorW){1'b0}}, sn_rho1};
   reg  [(Lanes+1)*PJW-1:0] sn_p_q;  // P_0 .. P_Lanes
   generate
     for (m = 0; m <= Lanes; m = m + 1) begin : g_p
@@ -763,16 +788,16 @@ module rpu_indicator #(
   // Back end: the relief. k' = kd + y1 + y2 (lanes 0 and 1); k2 = floor(k'²·2^-KF);
   // rhs = floor(k2·s²m²·2^-KF) against lhs = (x·sx)² + (z·sz)² (in the output stage).
   // ===============================================================================================
-  wire [KW-1:0] kk;
-  rpu_add3 #(.W(KW), .NegB(0), .NegC(0), .Cin(0)) u_k (
-    .a_i({{(KW - KF - 2){r_kd[KF+1]}}, r_kd}),
-    .b_i({{(KW - CW){rot_y[0*CW + CW-1]}}, rot_y[0*CW +: CW]}),
-    .c_i({{(KW - CW){rot_y[1*CW + CW-1]}}, rot_y[1*CW +: CW]}), .s_o(kk));
-  reg [KW-1:0] re_k_q;
+  wire [KpW-1:0] kk;
+  rpu_add3 #(.W(KpW), .NegB(0), .NegC(0), .Cin(0)) u_k (
+    .a_i({{(KpW - KF - 2){r_kd[KF+1]}}, r_kd}),
+    .b_i({{(KpW - CorW){rot_y[0*CorW + CorW-1]}}, rot_y[0*CorW +: CorW]}),
+    .c_i({{(KpW - CorW){rot_y[1*CorW + CorW-1]}}, rot_y[1*CorW +: CorW]}), .s_o(kk));
+  reg [KpW-1:0] re_k_q;
   always @(posedge clk_i) re_k_q <= kk;
-  wire [2*KW-1:0] k2p;
+  wire [2*KpW-1:0] k2p;
   wire            v9, t9;
-  rpu_mul #(.AW(KW), .BW(KW), .Signed(1), .TagW(1), .Latency(TKD - 1)) u_kk (
+  rpu_mul #(.AW(KpW), .BW(KpW), .Signed(1), .TagW(1), .Latency(TKD - 1)) u_kk (
     .clk_i, .rst_ni, .valid_i(vr[1]), .a_i(re_k_q), .b_i(re_k_q), .tag_i(1'b0),
     .valid_o(v9), .p_o(k2p), .tag_o(t9));
   wire [K2W-1:0] k2 = k2p[KF +: K2W];  // k'² < 2^(2KW−2)
@@ -791,19 +816,19 @@ module rpu_indicator #(
     .clk_i, .valid_i(vr[LXY+1]), .d_i({e_lhs_q, e_d2pos_q}), .d_o({re_lhs, re_d2pos}));
   localparam integer CmpW = (RHW > LHW ? RHW : LHW) + 1;
   wire re_in = re_d2pos & ({{(CmpW - LHW){1'b0}}, re_lhs} < {{(CmpW - RHW){1'b0}}, rhs});
-  wire unused_re = ^{v9, t9, v10, t10, k2p[KF-1:0], k2p[2*KW-1:KF+K2W], rhp[KF-1:0]};
+  wire unused_re = ^{v9, t9, v10, t10, k2p[KF-1:0], k2p[2*KpW-1:KF+K2W], rhp[KF-1:0]};
 
   // ===============================================================================================
   // Back end: the rocket. r = a − Y + (fins ? (Y rotated by 5ψ).y : 0); ρ < r.
   // ===============================================================================================
   wire [RW-1:0] ro_y  = r_cyl ? {RW{1'b0}} : {{(RW - YW){r_ysat[YW-1]}}, r_ysat};
-  wire [RW-1:0] ro_ys = r_fins ? {{(RW - CW){rot_y[CW-1]}}, rot_y[0 +: CW]} : {RW{1'b0}};
+  wire [RW-1:0] ro_ys = r_fins ? {{(RW - CorW){rot_y[CorW-1]}}, rot_y[0 +: CorW]} : {RW{1'b0}};
   wire [RW-1:0] ro_r;
   rpu_add3 #(.W(RW), .NegB(1), .NegC(0), .Cin(1)) u_ro (
     .a_i({{(RW - LW){r_ra[LW-1]}}, r_ra}), .b_i(ro_y), .c_i(ro_ys), .s_o(ro_r));
   reg [RW-1:0] ro_r_q;
   always @(posedge clk_i) ro_r_q <= ro_r;
-  wire [RW:0] ro_d = {{(RW + 1 - CW){1'b0}}, sn_rho1} - {ro_r_q[RW-1], ro_r_q};
+  wire [RW:0] ro_d = {{(RW + 1 - CorW){1'b0}}, sn_rho1} - {ro_r_q[RW-1], ro_r_q};
   reg ro_bit_q;
   always @(posedge clk_i) ro_bit_q <= ro_d[RW];
 
@@ -820,11 +845,11 @@ module rpu_indicator #(
     .clk_i, .valid_i(vr[BSn]), .d_i(sn_bit), .d_o(o_sn));
   rpu_delay #(.W(1), .D(BLast - BRo)) u_dl_oro (
     .clk_i, .valid_i(vr[BRo]), .d_i(ro_bit_q), .d_o(o_ro));
-  localparam integer COW = TagW + 5 + AW + CW + 1;
+  localparam integer COW = TagW + 5 + AW + CorW + 1;
   wire [TagW-1:0] o_tag;
   wire [4:0]      o_typ;
   wire [AW-1:0]   o_angle;
-  wire [CW-1:0]   o_rho;
+  wire [CorW-1:0]   o_rho;
   wire            o_ovf;
   rpu_delay #(.W(COW), .D(BLast)) u_dl_out (
     .clk_i, .valid_i(vr[0]), .d_i({r_tag, r_typ, r_angle, r_rho, r_ovf}),
@@ -834,9 +859,9 @@ module rpu_indicator #(
                               (o_typ[3] & |o_sn) | (o_typ[4] & o_ro);
   wire [Lanes-1:0] o_turns  = ({Lanes{o_typ[2]}} & o_sp) | ({Lanes{o_typ[3]}} & o_sn);
   wire [AW-1:0]    o_ang    = o_typ[0] || o_typ == 5'b0 ? {AW{1'b0}} : o_angle;
-  wire [CW-1:0]    o_rh     = o_typ[2] || o_typ[3] || o_typ[4] ? o_rho : {CW{1'b0}};
+  wire [CorW-1:0]    o_rh     = o_typ[2] || o_typ[3] || o_typ[4] ? o_rho : {CorW{1'b0}};
   // Loaded only with a valid point.
-  rpu_stage #(.W(1 + Lanes + AW + CW + 1 + TagW), .Hold(1)) u_out (
+  rpu_stage #(.W(1 + Lanes + AW + CorW + 1 + TagW), .Hold(1)) u_out (
     .clk_i, .rst_ni, .valid_i(vr[BLast]), .d_i({o_inside, o_turns, o_ang, o_rh, o_ovf, o_tag}),
     .valid_o, .q_o({inside_o, turn_inside_o, angle_o, rho_o, ovf_o, tag_o}));
 endmodule

@@ -1,7 +1,9 @@
 // The indicator's descriptor fields (SurfaceDesc, ref/model/descriptors.h; formats: rpu_indicator's
-// ports) packed into one vector, LSB first, for the surface path's internal buses and RAMs
-// (rpu_surface_ip, rpu_surface_ip_step, rpu_surface_top). Included inside a module that defines
-// SurfW; each offset is defined from the previous one (SdW = 15·LW + 61 bits, 421 at LW = 24).
+// header) packed into one word, LSB first. The word travels as one port (desc_i) into
+// rpu_surface_top, rpu_surface_ip, rpu_surface_ip_step and rpu_indicator, and rides their buses and
+// RAMs. Included inside a module that defines SurfW; each offset is defined from the previous one.
+// Its total SdW equals `RPU_SDW (rpu_widths.vh; 15·LW + 61 bits, 421 at LW = 24), which a module
+// uses for the port's width.
   localparam integer SdKF    = SurfW;          // Q(1.KF) constants
   localparam integer SdMW    = SurfW + 2;      // ScaledConst mantissas
   localparam integer SdTurnW = SurfW + 8;      // a_turn, k_turn

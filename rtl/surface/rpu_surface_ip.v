@@ -30,17 +30,15 @@
 // Outputs: hit_o = the piece has a sign change (the twin's !miss), tau_o = τ_K (0 without a hit),
 // ovf_o = some indicator of the search saturated (the twin's flag), ctx_o = ctx_i.
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_surface_ip #(
 `include "rpu_surface_ip_params.vh"
   parameter integer Unrolled = 0,   // 1: K + 1 pass units, 0: one pass unit used K + 1 times
   parameter integer CtxW     = 1,   // caller's context passed through (>= 1)
   // Derived (do not override).
-  parameter integer KF       = SurfW,          // Q(1.KF) constants
-  parameter integer MW       = SurfW + 2,      // ScaledConst mantissas
-  parameter integer TurnW    = SurfW + 8,      // a_turn, k_turn
-  parameter integer R2W      = 2 * SurfW + 1,  // r2
-  parameter integer LabW     = SurfW + 1       // lB' − lA'
+  parameter integer DescW    = `RPU_SDW(SurfW), // the descriptor word (rpu_surface_desc.vh)
+  parameter integer LabW     = SurfW + 1        // lB' − lA'
 ) (
   input  wire               clk_i,
   input  wire               rst_ni,
@@ -51,9 +49,7 @@ module rpu_surface_ip #(
   input  wire [3*LabW-1:0]  lab_i,         // lB' − lA', llsb, {z, y, x}
   input  wire               x_negative_i,  // the piece's azimuth branch (spiral, snail)
   input  wire               last_turn_i,
-  // The surface's indicator fields (SurfaceDesc; rpu_indicator's ports and formats).
-  input  wire [2:0]         type_i,
-`include "rpu_surface_ind_ports.vh"
+  input  wire [DescW-1:0]   desc_i,        // the surface's indicator fields (rpu_surface_desc.vh)
   input  wire [CtxW-1:0]    ctx_i,
   output wire               valid_o,
   output wire               hit_o,
@@ -85,15 +81,11 @@ module rpu_surface_ip #(
       $fatal(1, "rpu_surface_ip: N1 must be in 1..8 and divide N");
     if (Unrolled != 0 && Unrolled != 1) $fatal(1, "rpu_surface_ip: Unrolled must be 0 or 1");
     if (CtxW < 1) $fatal(1, "rpu_surface_ip: CtxW must be >= 1");
-    if (KF != SurfW || MW != SurfW + 2 || TurnW != SurfW + 8 || R2W != 2 * SurfW + 1 ||
-        LabW != SurfW + 1)
+    if (DescW != SdW || LabW != SurfW + 1)
       $fatal(1, "rpu_surface_ip: derived parameters must not be overridden");
   end
 
-  wire [SdW-1:0] desc_in = {cone_s_i, cone_m_i, fin_s_i, fin_m_i, rocket_b_i, rocket_a_i,
-                            k_turn_i, a_turn_i, rho0_i, y_angle_s_i, y_angle_m_i, ke2_i, kd_i,
-                            r2_i, sz_i, sy_i, sx_i, full_turns_i, type_i};
-  wire [DW-1:0]  data_in = {ctx_i, desc_in, la_i, lab_i, x_negative_i, last_turn_i};
+  wire [DW-1:0]  data_in = {ctx_i, desc_i, la_i, lab_i, x_negative_i, last_turn_i};
   // The state an item starts with: τ = 0, lo = hi = 0 (pass 0 sets them), live = run_i, no ovf.
   wire [StW-1:0] st_in   = {{(N + 2){1'b0}}, run_i, 1'b0};
 

@@ -34,6 +34,7 @@
 // The descriptor, lA' and the branch bits ride the lane-0 x product's tag to the indicators
 // (Lm + 1 cycles); ctx_i rides the whole pass.
 `default_nettype none
+`include "rpu_widths.vh"
 
 module rpu_surface_ip_step #(
 `include "rpu_surface_ip_params.vh"
@@ -45,7 +46,7 @@ module rpu_surface_ip_step #(
   parameter integer ShW    = 8,                   // the step's shift N − N1·k
   parameter integer StW    = N + 4,               // state {τ, lo, hi, live, ovf}
   parameter integer LabW   = SurfW + 1,           // lB' − lA'
-  parameter integer DescW  = 15 * SurfW + 61      // the packed descriptor (rpu_surface_desc.vh)
+  parameter integer DescW  = `RPU_SDW(SurfW)       // the packed descriptor (rpu_surface_desc.vh)
 ) (
   input  wire               clk_i,
   input  wire               rst_ni,
@@ -152,15 +153,6 @@ module rpu_surface_ip_step #(
   wire [NC-1:0]  ind_inside, ind_ovf;
   wire           ind_valid;
   wire [ItW-1:0] ind_it;
-  `define RPU_SURFACE_IND_DESC(D) \
-    .type_i(D[SdTypeO +: 3]), .full_turns_i(D[SdFullO +: 4]), \
-    .sx_i(D[SdSxO +: SdKF + 1]), .sy_i(D[SdSyO +: SdKF + 1]), .sz_i(D[SdSzO +: SdKF + 1]), \
-    .r2_i(D[SdR2O +: SdR2W]), .kd_i(D[SdKdO +: SdKF + 2]), .ke2_i(D[SdKe2O +: SdKF + 2]), \
-    .y_angle_m_i(D[SdYamO +: SdMW]), .y_angle_s_i(D[SdYasO +: 8]), \
-    .rho0_i(D[SdRho0O +: LW]), .a_turn_i(D[SdAturnO +: SdTurnW]), \
-    .k_turn_i(D[SdKturnO +: SdTurnW]), .rocket_a_i(D[SdRaO +: LW]), .rocket_b_i(D[SdRbO +: LW]), \
-    .fin_m_i(D[SdFinmO +: SdMW]), .fin_s_i(D[SdFinsO +: 8]), .cone_m_i(D[SdConemO +: SdMW]), \
-    .cone_s_i(D[SdConesO +: 8])
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_ind
       wire [Turns-1:0]  turns_unused;
@@ -170,7 +162,7 @@ module rpu_surface_ip_step #(
         rpu_indicator #(.SurfW(SurfW), .AngleW(AngleW), .Lanes(Turns), .TagW(ItW)) u_ind (
           .clk_i, .rst_ni, .valid_i(s1_valid_q), .l_i(s1_l_q[e*3*LW +: 3*LW]),
           .x_negative_i(s1_branch_q[1]), .last_turn_i(s1_branch_q[0]),
-          `RPU_SURFACE_IND_DESC(s1_desc_q), .tag_i(s1_it_q),
+          .desc_i(s1_desc_q), .tag_i(s1_it_q),
           .valid_o(ind_valid), .inside_o(ind_inside[e]), .turn_inside_o(turns_unused),
           .angle_o(angle_unused), .rho_o(rho_unused), .ovf_o(ind_ovf[e]), .tag_o(ind_it));
       end else begin : g_plain
@@ -178,7 +170,7 @@ module rpu_surface_ip_step #(
         rpu_indicator #(.SurfW(SurfW), .AngleW(AngleW), .Lanes(Turns), .TagW(1)) u_ind (
           .clk_i, .rst_ni, .valid_i(s1_valid_q), .l_i(s1_l_q[e*3*LW +: 3*LW]),
           .x_negative_i(s1_branch_q[1]), .last_turn_i(s1_branch_q[0]),
-          `RPU_SURFACE_IND_DESC(s1_desc_q), .tag_i(1'b0),
+          .desc_i(s1_desc_q), .tag_i(1'b0),
           .valid_o(v_unused), .inside_o(ind_inside[e]), .turn_inside_o(turns_unused),
           .angle_o(angle_unused), .rho_o(rho_unused), .ovf_o(ind_ovf[e]), .tag_o(t_unused));
         wire unused_plain = ^{v_unused, t_unused};
@@ -186,7 +178,6 @@ module rpu_surface_ip_step #(
       wire unused_trace = ^{turns_unused, angle_unused, rho_unused};
     end
   endgenerate
-  `undef RPU_SURFACE_IND_DESC
 
 `ifndef SYNTHESIS
   // The ring period and the top's admission count on LInd (rpu_surface_latency.vh): check it

@@ -94,6 +94,7 @@ module rpu_surface_setup #(
   input  wire [3*DirW-1:0]    vhat_i,        // v̂, Q(2.FV)
   input  wire [3*CoordW-1:0]  c0_i,          // bounding-sphere centre, LSB
   input  wire [R2W-1:0]       r2_i,          // bounding-sphere radius², LSB², unsigned
+  input  wire [2:0]           type_i,        // scene::SurfaceType
 `include "rpu_surface_setup_ports.vh"
   input  wire [1:0]           piece_i,       // 0..2
   input  wire [TagW-1:0]      tag_i,
@@ -115,13 +116,13 @@ module rpu_surface_setup #(
   localparam integer CW   = CoordW;
   localparam integer LW   = SurfW;
   localparam integer MW   = MantW;
-  localparam integer KW   = ConstW;
   localparam integer SF   = SurfW + 2;
   localparam integer ShW  = 7;                 // to_local_s
   localparam integer PmW  = DiffW + MW;        // q_c · M[r][c], exact
   localparam integer SumW = PmW + 1;           // a row: |.| < 3 · 2^(CW+MW−1)
-  localparam integer PeW  = LW + KW;           // x·cos, z·sin, exact
-  localparam integer FeW  = PeW + 1;           // f_e: |.| ≤ 2^(LW+KW−1); |feA| + |feB| unsigned
+  localparam integer PeW  = LW + ConstW;       // x·cos, z·sin, exact
+  localparam integer FeW  = PeW + 1;           // f_e: |.| ≤ 2^(LW+ConstW−1); |feA| + |feB|
+                                               // unsigned
   localparam integer FaW  = FeW - 1;           // |f_e|, unsigned
   localparam integer Den1W = LW + 1;           // |dy| < 2^LW, |la.x| + |lb.x| ≤ 2^LW
   localparam integer Den2W = FeW;              // |feA| + |feB| ≤ 2^(FeW−1), or |dy|
@@ -140,7 +141,7 @@ module rpu_surface_setup #(
   localparam integer SpLCh = `RPU_MUL_LAT(InvW + 1, 2 * DiffW + 2, 1) + 3;
   localparam integer Ls    = SpStages + 9 + SpL1 + SpL2 + SpL3 + SpL4 + SpLCh;
   localparam integer L1 = `RPU_MUL_LAT(DiffW, MW, 1);
-  localparam integer L2 = `RPU_MUL_LAT(LW, KW, 1);
+  localparam integer L2 = `RPU_MUL_LAT(LW, ConstW, 1);
   localparam integer L3W = `RPU_MUL_LAT(DiffW, SW + 1, 1);
   localparam integer L3L = `RPU_MUL_LAT(LDiffW, SW + 1, 1);
   localparam integer L3 = L3W > L3L ? L3W : L3L;  // both groups run at this latency
@@ -193,8 +194,8 @@ module rpu_surface_setup #(
   localparam integer OffYMin   = OffS + ShW;
   localparam integer OffYMax   = OffYMin + LW;
   localparam integer OffSin    = OffYMax + LW;
-  localparam integer OffCos    = OffSin + KW;
-  localparam integer OffEnd    = OffCos + KW;
+  localparam integer OffCos    = OffSin + ConstW;
+  localparam integer OffEnd    = OffCos + ConstW;
   localparam integer OffType   = OffEnd + AngleW;
   localparam integer OffPiece  = OffType + 3;
   localparam integer OffTag    = OffPiece + 2;
@@ -211,17 +212,18 @@ module rpu_surface_setup #(
     .rd_valid_o(desc_valid), .rd_ready_i(sp_valid), .rd_data_o(desc));
 `ifndef SYNTHESIS
   // The FIFO never fills (it holds at most Ls items) and always has the item the sphere unit
-  // delivers.
+  // delivers. Checked only out of reset: at an edge inside the reset the registers still hold
+  // their power-up values (live_q included), which an X-seeded simulation makes random.
   reg live_q;  // out of reset
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) live_q <= 1'b0;
-    else         live_q <= 1'b1;
-  end
-  always @(posedge clk_i) begin
-    if (live_q && valid_i && !desc_wr_ready)
-      $fatal(1, "rpu_surface_setup: descriptor FIFO full");
-    if (live_q && sp_valid && !desc_valid)
-      $fatal(1, "rpu_surface_setup: descriptor FIFO empty at the sphere unit's output");
+    else begin
+      live_q <= 1'b1;
+      if (live_q && valid_i && !desc_wr_ready)
+        $fatal(1, "rpu_surface_setup: descriptor FIFO full");
+      if (live_q && sp_valid && !desc_valid)
+        $fatal(1, "rpu_surface_setup: descriptor FIFO empty at the sphere unit's output");
+    end
   end
 `else
   wire unused_fifo = ^{desc_wr_ready, desc_valid};
@@ -241,7 +243,7 @@ module rpu_surface_setup #(
 
   // The context from here to the local transform's sums:
   // {tag, piece, az, end_nz, end_lo, cos, sin, y_max, y_min, s, A, AB, pred1, sovf}.
-  localparam integer C1W  = TagW + 2 + 3 + 2 * KW + 2 * LW + ShW + 3 * CW + 3 * DiffW + 2;
+  localparam integer C1W  = TagW + 2 + 3 + 2 * ConstW + 2 * LW + ShW + 3 * CW + 3 * DiffW + 2;
   localparam integer C1SO = 2 + 3 * DiffW + 3 * CW;  // s in the context
   wire               valid1_q;
   wire [6*DiffW-1:0] q1_q;
@@ -250,7 +252,7 @@ module rpu_surface_setup #(
   rpu_stage #(.W(6*DiffW + 9*MW + C1W)) u_s1 (
     .clk_i, .rst_ni, .valid_i(sp_valid),
     .d_i({q, desc[OffM +: 9*MW], desc[OffTag +: TagW], desc[OffPiece +: 2], az, end_nz, end_lo,
-          desc[OffCos +: KW], desc[OffSin +: KW], desc[OffYMax +: LW], desc[OffYMin +: LW],
+          desc[OffCos +: ConstW], desc[OffSin +: ConstW], desc[OffYMax +: LW], desc[OffYMin +: LW],
           desc[OffS +: ShW], sp_a, sp_ab, sp_pred1, sp_ovf}),
     .valid_o(valid1_q), .q_o({q1_q, m1_q, c1_q}));
 
@@ -318,24 +320,24 @@ module rpu_surface_setup #(
   wire        pred1_4 = c4_q[1];
   wire [C5W-1:0] c5 = {c4_q[C1W-1 -: TagW + 5], c4_q[C1SO + ShW +: 2*LW], c4_q[2 +: C1SO - 2],
                        pred1_4, c4_q[0] | (pred1_4 & (|clamped))};
-  wire [2*KW-1:0] cs4 = c4_q[C1SO + ShW + 2*LW +: 2*KW];  // {cos, sin}
+  wire [2*ConstW-1:0] cs4 = c4_q[C1SO + ShW + 2*LW +: 2*ConstW];  // {cos, sin}
   wire            valid5_q;
   wire [6*LW-1:0] l5_q;
-  wire [2*KW-1:0] cs5_q;
+  wire [2*ConstW-1:0] cs5_q;
   wire [C5W-1:0]  c5_q;
-  rpu_stage #(.W(6*LW + 2*KW + C5W)) u_s5 (
+  rpu_stage #(.W(6*LW + 2*ConstW + C5W)) u_s5 (
     .clk_i, .rst_ni, .valid_i(valid4_q), .d_i({lsat, cs4, c5}), .valid_o(valid5_q),
     .q_o({l5_q, cs5_q, c5_q}));
 
   // =============================================================================================
   // The end-plane products la.x·cos, la.z·sin, lb.x·cos, lb.z·sin (exact), index 2e + {0, 1}.
   // =============================================================================================
-  wire [KW-1:0]    sin5 = cs5_q[0 +: KW];
-  wire [KW-1:0]    cos5 = cs5_q[KW +: KW];
+  wire [ConstW-1:0]    sin5 = cs5_q[0 +: ConstW];
+  wire [ConstW-1:0]    cos5 = cs5_q[ConstW +: ConstW];
   wire [4*PeW-1:0] pe;
   wire             m2_valid;
   wire [C6W-1:0]   c6;
-  rpu_mul_vec #(.Count(4), .AW(LW), .BW(KW), .Signed(1), .TagW(C6W)) u_pe (
+  rpu_mul_vec #(.Count(4), .AW(LW), .BW(ConstW), .Signed(1), .TagW(C6W)) u_pe (
     .clk_i, .rst_ni, .valid_i(valid5_q),
     .a_i({l5_q[5*LW +: LW], l5_q[3*LW +: LW], l5_q[2*LW +: LW], l5_q[0 +: LW]}),
     .b_i({sin5, cos5, sin5, cos5}), .tag_i({c5_q, l5_q}), .valid_o(m2_valid), .p_o(pe),

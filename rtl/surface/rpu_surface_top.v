@@ -16,8 +16,9 @@
 // Ports: the camera eye_i (h, LSB) and w_i (W, Q(4.FE+14)) are constants while items are in
 // flight (rpu_top's camera register). Per item, sampled with valid_i: vhat_i (the ray generator's
 // v̂), the surface descriptor (SurfaceDesc: the setup's fields, bound_c0_i, bound_r2_i, origin_i,
-// to_local_i, to_local_s_i, type_i, y_min_i, y_max_i, end_angle_i, end_cos_i, end_sin_i as
-// rpu_surface_setup's ports; the indicator's fields as rpu_indicator's ports), piece_i, tag_i.
+// to_local_i, to_local_s_i, y_min_i, y_max_i, end_angle_i, end_cos_i, end_sin_i as
+// rpu_surface_setup's ports; the indicator's fields, the type among them, as one word desc_i,
+// rpu_surface_desc.vh), piece_i, tag_i.
 //
 // Flow: no stall inside. Unrolled = 1: ready_o = 1, one item per cycle. Unrolled = 0 (the
 // default): the IP's ring takes an item only into a free slot, so the items are admitted here,
@@ -56,8 +57,7 @@ module rpu_surface_top #(
   parameter integer BR2W   = `RPU_R2W(CoordW),           // the bounding sphere's R²
   parameter integer MantW  = SurfW + 2,                // M's entries, ScaledConst mantissas
   parameter integer ConstW = SurfW + 2,                // end_cos, end_sin, kd, ke2: Q(1.KF)
-  parameter integer TurnW  = SurfW + 8,                // a_turn, k_turn
-  parameter integer R2W    = 2 * SurfW + 1,            // the indicator's r2
+  parameter integer DescW  = `RPU_SDW(SurfW),          // the indicator's fields (rpu_surface_desc.vh)
   parameter integer EdgeW  = `RPU_EGW(EdgeFrac),        // W: Q(4.FE+14)
   parameter integer DepthW = CoordW + 4 + EdgeW + 2    // rpu_capture's depth
 ) (
@@ -72,8 +72,7 @@ module rpu_surface_top #(
   input  wire [3*CoordW-1:0] bound_c0_i,     // bounding-sphere centre, LSB
   input  wire [BR2W-1:0]     bound_r2_i,     // bounding-sphere radius², LSB², unsigned
 `include "rpu_surface_setup_ports.vh"
-  // SurfaceDesc: the indicator's fields (rpu_indicator's ports).
-`include "rpu_surface_ind_ports.vh"
+  input  wire [DescW-1:0]    desc_i,         // SurfaceDesc: the indicator's fields, one word
   input  wire [1:0]          piece_i,        // 0..2
   input  wire [TagW-1:0]     tag_i,
   output wire                valid_o,
@@ -117,8 +116,7 @@ module rpu_surface_top #(
     if (EdgeFrac < 8 || EdgeFrac > 40) $fatal(1, "rpu_surface_top: EdgeFrac must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_surface_top: TagW must be >= 1");
     if (DirW != `RPU_VHATW(DirFrac) || DiffW != `RPU_DW(CoordW) || BR2W != `RPU_R2W(CoordW) ||
-        MantW != SurfW + 2 || ConstW != SurfW + 2 || TurnW != SurfW + 8 ||
-        R2W != 2 * SurfW + 1 || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
+        MantW != SurfW + 2 || ConstW != SurfW + 2 || DescW != SdW || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
       $fatal(1, "rpu_surface_top: derived parameters must not be overridden");
     if (DSW > DepthW) $fatal(1, "rpu_surface_top: internal: depth width");
   end
@@ -135,14 +133,11 @@ module rpu_surface_top #(
   wire accept = valid_i && ready_o;
 
   // ---- the indicator fields wait for the setup ----
-  wire [SdW-1:0] desc_in = {cone_s_i, cone_m_i, fin_s_i, fin_m_i, rocket_b_i, rocket_a_i,
-                            k_turn_i, a_turn_i, rho0_i, y_angle_s_i, y_angle_m_i, ke2_i, kd_i,
-                            r2_i, sz_i, sy_i, sx_i, full_turns_i, type_i};
   wire           su_valid;
   wire           df_wr_ready, df_rd_valid;
   wire [SdW-1:0] df_desc;
   rpu_fifo #(.Width(SdW), .Log2Depth(DescFifoLog2)) u_desc_fifo (
-    .clk_i, .rst_ni, .wr_valid_i(accept), .wr_ready_o(df_wr_ready), .wr_data_i(desc_in),
+    .clk_i, .rst_ni, .wr_valid_i(accept), .wr_ready_o(df_wr_ready), .wr_data_i(desc_i),
     .rd_valid_o(df_rd_valid), .rd_ready_i(su_valid), .rd_data_o(df_desc));
 
   // ---- setup ----
@@ -157,8 +152,8 @@ module rpu_surface_top #(
   rpu_surface_setup #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
                       .SqrtW(SqrtW), .SurfW(SurfW), .AngleW(AngleW), .TagW(TagW)) u_setup (
     .clk_i, .rst_ni, .valid_i(accept), .eye_i, .vhat_i, .c0_i(bound_c0_i), .r2_i(bound_r2_i),
-    .origin_i, .to_local_i, .to_local_s_i, .type_i, .y_min_i, .y_max_i, .end_angle_i,
-    .end_cos_i, .end_sin_i, .piece_i, .tag_i,
+    .origin_i, .to_local_i, .to_local_s_i, .type_i(desc_i[SdTypeO +: 3]), .y_min_i, .y_max_i,
+    .end_angle_i, .end_cos_i, .end_sin_i, .piece_i, .tag_i,
     .valid_o(su_valid), .pred1_o(su_pred1_unused), .piece_valid_o(su_piece_valid),
     .pieces_o(su_pieces), .s_lo_o(su_slo_unused), .s_hi_o(su_shi_unused), .a_o(su_a),
     .ab_o(su_ab), .la_o(su_la), .lab_o(su_lab), .x_negative_o(su_xneg), .last_turn_o(su_last),
@@ -173,16 +168,7 @@ module rpu_surface_top #(
                    .Unrolled(Unrolled), .CtxW(CtxW)) u_ip (
     .clk_i, .rst_ni, .valid_i(su_valid), .ready_o(ip_ready), .run_i(su_piece_valid),
     .la_i(su_la), .lab_i(su_lab), .x_negative_i(su_xneg), .last_turn_i(su_last),
-    .type_i(df_desc[SdTypeO +: 3]), .full_turns_i(df_desc[SdFullO +: 4]),
-    .sx_i(df_desc[SdSxO +: SdKF + 1]), .sy_i(df_desc[SdSyO +: SdKF + 1]),
-    .sz_i(df_desc[SdSzO +: SdKF + 1]), .r2_i(df_desc[SdR2O +: SdR2W]),
-    .kd_i(df_desc[SdKdO +: SdKF + 2]), .ke2_i(df_desc[SdKe2O +: SdKF + 2]),
-    .y_angle_m_i(df_desc[SdYamO +: SdMW]), .y_angle_s_i(df_desc[SdYasO +: 8]),
-    .rho0_i(df_desc[SdRho0O +: LW]), .a_turn_i(df_desc[SdAturnO +: SdTurnW]),
-    .k_turn_i(df_desc[SdKturnO +: SdTurnW]), .rocket_a_i(df_desc[SdRaO +: LW]),
-    .rocket_b_i(df_desc[SdRbO +: LW]), .fin_m_i(df_desc[SdFinmO +: SdMW]),
-    .fin_s_i(df_desc[SdFinsO +: 8]), .cone_m_i(df_desc[SdConemO +: SdMW]),
-    .cone_s_i(df_desc[SdConesO +: 8]),
+    .desc_i(df_desc),
     .ctx_i({su_tag, su_a, su_ab, su_pieces, su_ovf, su_piece_valid}),
     .valid_o(ip_valid), .hit_o(ip_hit), .tau_o(ip_tau), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
 

@@ -10,10 +10,10 @@
 namespace rpu::ref {
 
 int surface_setup_latency(const HwParams& p) {
-  const int lw = p.surf_w, mw = p.surf_mant_w(), kw = p.surf_const_frac() + 2;
+  const int lw = p.surf_w, mw = p.surf_mant_w(), constw = p.surf_const_frac() + 2;
   const int sw = p.surf_cut_frac() + 1;  // the piece parameter s ∈ [0, 1], unsigned
   const int local = mul_latency(p.diff_w(), mw, true);     // (X − origin)_k · M_rk
-  const int end_plane = mul_latency(lw, kw, true);         // x·cos, z·sin
+  const int end_plane = mul_latency(lw, constw, true);         // x·cos, z·sin
   const int piece = std::max(mul_latency(p.diff_w(), sw + 1, true),   // (B − A)_k · s
                              mul_latency(lw + 1, sw + 1, true));      // (lb − la)_k · s
   return sphere_latency(p) + 1 + local + 4 + end_plane + 3 + sw + 2 + piece + 2;

@@ -39,7 +39,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
 const int R2W = kP.r2_w(), LW = kP.surf_w, MW = kP.surf_mant_w(), KF = kP.surf_const_frac();
-const int KW = KF + 2, SF = kP.surf_cut_frac(), SW = SF + 1, AW = kP.angle_w;
+const int ConstW = KF + 2, SF = kP.surf_cut_frac(), SW = SF + 1, AW = kP.angle_w;
 constexpr int kShW = 7;
 
 enum Source { kPixel, kThrough, kInside, kGrazing, kPlane, kEndAngle, kSaturating, kSources };
@@ -85,7 +85,7 @@ bool fits_ports(const Item& it) {
             fixed::fits_unsigned(static_cast<u128>(s.bound.R2), R2W) && s.to_local_s >= 0 &&
             s.to_local_s < (1 << kShW) && fixed::fits_signed(s.y_min, LW) &&
             fixed::fits_signed(s.y_max, LW) && s.end_angle < (std::uint64_t{1} << AW) &&
-            fixed::fits_signed(s.end_cos, KW) && fixed::fits_signed(s.end_sin, KW) &&
+            fixed::fits_signed(s.end_cos, ConstW) && fixed::fits_signed(s.end_sin, ConstW) &&
             it.piece >= 0 && it.piece < 4;
   for (i64 m : s.to_local) ok = ok && fixed::fits_signed(m, MW);
   return ok;
@@ -375,8 +375,8 @@ int main(int argc, char** argv) {
     in("R2", t.r2_i, s.bound.R2, R2W).vec("origin", t.origin_i, s.origin, CW);
     in.fields("to_local", t.to_local_i, s.to_local, MW)("to_local_s", t.to_local_s_i, s.to_local_s, kShW);
     in("type", t.type_i, static_cast<int>(s.type), 3)("y_min", t.y_min_i, s.y_min, LW)("y_max", t.y_max_i, s.y_max, LW);
-    in("end_angle", t.end_angle_i, static_cast<i128>(s.end_angle), AW)("end_cos", t.end_cos_i, s.end_cos, KW);
-    in("end_sin", t.end_sin_i, s.end_sin, KW)("piece", t.piece_i, it.piece, 2);
+    in("end_angle", t.end_angle_i, static_cast<i128>(s.end_angle), AW)("end_cos", t.end_cos_i, s.end_cos, ConstW);
+    in("end_sin", t.end_sin_i, s.end_sin, ConstW)("piece", t.piece_i, it.piece, 2);
   };
   st.outputs = [](sim::Outputs& o, const Vrpu_surface_setup& t, const Item& it) {
     const ref::SurfaceSetupOut& w = it.want.o;

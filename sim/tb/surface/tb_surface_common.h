@@ -12,11 +12,14 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "model/surface/rpu_surface_setup.h"
 #include "model/units.h"
 #include "scene/compiled_scene.h"
 #include "scene/scene_json.h"
 #include "scene/surface_geometry.h"
+#include "surface_word.h"
 #include "tb_base.h"
 
 namespace rpu::sim {
@@ -226,19 +229,22 @@ inline ref::SurfaceDesc edit_indicator_fields(ref::SurfaceDesc s, const ref::HwP
   return s;
 }
 
-// The indicator fields of a SurfaceDesc on rpu_indicator's port names (rpu_surface_ip and
-// rpu_surface_top share them).
+// The indicator fields of a SurfaceDesc on the desc_i port of rpu_indicator, rpu_surface_ip and
+// rpu_surface_top: driven packed (surface_word.h), listed field by field in a mismatch report.
 template <class Top>
 void indicator_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::SurfaceDesc& s) {
-  const int lw = p.surf_w, kf = p.surf_const_frac(), mw = p.surf_mant_w(), tw = lw + 8;
-  in("type", top.type_i, static_cast<int>(s.type), 3)("full_turns", top.full_turns_i, s.full_turns, 4);
-  in("sx", top.sx_i, s.sx, kf + 1)("sy", top.sy_i, s.sy, kf + 1)("sz", top.sz_i, s.sz, kf + 1);
-  in("r2", top.r2_i, s.r2, 2 * lw + 1)("kd", top.kd_i, s.kd, kf + 2)("ke2", top.ke2_i, s.ke2, kf + 2);
-  in("y_angle_m", top.y_angle_m_i, s.y_angle.m, mw)("y_angle_s", top.y_angle_s_i, s.y_angle.s, 8);
-  in("rho0", top.rho0_i, s.rho0, lw)("a_turn", top.a_turn_i, s.a_turn, tw)("k_turn", top.k_turn_i, s.k_turn, tw);
-  in("rocket_a", top.rocket_a_i, s.rocket_a, lw)("rocket_b", top.rocket_b_i, s.rocket_b, lw);
-  in("fin_m", top.fin_m_i, s.fin.m, mw)("fin_s", top.fin_s_i, s.fin.s, 8);
-  in("cone_m", top.cone_m_i, s.cone.m, mw)("cone_s", top.cone_s_i, s.cone.s, 8);
+  if (in.mode() == Inputs::kList) {
+    const auto n = [](i128 v) { return static_cast<long long>(v); };
+    in.note("desc", fmt::format("type {} full_turns {} s ({}, {}, {}) r2 {} kd {} ke2 {} "
+                                "y_angle {}·2^-{} rho0 {} a_turn {} k_turn {} rocket a {} b {} "
+                                "fin {}·2^-{} cone {}·2^-{}",
+                                static_cast<int>(s.type), s.full_turns, n(s.sx), n(s.sy), n(s.sz),
+                                n(s.r2), n(s.kd), n(s.ke2), n(s.y_angle.m), s.y_angle.s, n(s.rho0),
+                                n(s.a_turn), n(s.k_turn), n(s.rocket_a), n(s.rocket_b), n(s.fin.m),
+                                s.fin.s, n(s.cone.m), s.cone.s));
+    return;
+  }
+  in.bits("desc", top.desc_i, pack_surface_desc(p, s));
 }
 
 }  // namespace rpu::sim
