@@ -16,7 +16,7 @@
 //       drain fail. tb.check(items, stream, details...): run, then pass; the exit status.
 //   Stream<Top, Item>  what the unit's testbench says: its input fields (Inputs: drive, junk and
 //       report from one list), its output fields (Outputs: read, compare and report), the latency,
-//       the tag width and the traffic pattern.
+//       the tag width (TAG_W unless told) and the traffic pattern.
 //
 // A mismatch prints, ibex-style, FAILURE with the cycle, the item number and where the item came
 // from, the differing fields, every input field and a table of expected and actual outputs.
@@ -55,11 +55,6 @@ inline std::uint64_t test_seed(const char* name, std::uint64_t fallback = 202611
   std::printf("%s: seed %llu (set RPU_SEED to reproduce another)\n", name,
               static_cast<unsigned long long>(seed));
   return seed;
-}
-
-// Vector count: RPU_VECTORS, else the testbench's default.
-inline long vector_count(long fallback) {
-  return static_cast<long>(env_u64("RPU_VECTORS", static_cast<std::uint64_t>(fallback)));
 }
 
 // The input fields of an item, named once: the base calls the testbench's list to drive an item,
@@ -101,13 +96,10 @@ class Inputs {
   template <class P>
   Inputs& bits(const char* name, P& port, const Bits& b) {
     if (mode_ == kList) return note(name, std::to_string(b.width()) + " bits");
-    if (mode_ == kJunk) {
-      Bits j;
-      for (int k = 0; k < b.width(); k += 32) j.push(random(std::min(32, b.width() - k)), std::min(32, b.width() - k));
-      put(port, j);
-    } else {
-      put(port, b);
-    }
+    Bits junk;
+    for (int k = 0; mode_ == kJunk && k < b.width(); k += 32)
+      junk.push(random(32), std::min(32, b.width() - k));
+    put(port, mode_ == kJunk ? junk : b);
     return *this;
   }
   // Only listed (an input that reaches the unit otherwise, or a value behind the fields).
@@ -170,17 +162,10 @@ class Outputs {
   void print() const {
     std::printf("  %-14s %-30s %s\n", "output", "expected", "actual");
     for (const Field& f : fields_) {
-      std::string want(f.n > 1 ? "(" : ""), got(want);
-      for (int c = 0; c < f.n; ++c) {
-        want += (c ? ", " : "");
-        want += str(f.want[c]);
-        got += (c ? ", " : "");
-        got += str(shown(f, c));
-      }
-      want += f.n > 1 ? ")" : "";
-      got += f.n > 1 ? ")" : "";
-      std::printf("  %-14s %-30s %-30s%s\n", f.name, want.c_str(), got.c_str(),
-                  !f.care ? " (not compared)" : f.bad ? " <-- differs" : "");
+      const i128 got[3] = {shown(f, 0), shown(f, 1), shown(f, 2)};
+      const char* mark = !f.care ? " (not compared)" : f.bad ? " <-- differs" : "";
+      std::printf("  %-14s %-30s %-30s%s\n", f.name, text(f.want, f.n).c_str(),
+                  text(got, f.n).c_str(), mark);
     }
     if (!notes_.empty()) std::printf("  twin: %s\n", notes_.c_str());
   }
@@ -193,6 +178,11 @@ class Outputs {
     i128 want[3];
     u128 got[3];
   };
+  static std::string text(const i128* v, int n) {  // "v" or "(x, y, z)"
+    std::string t(n > 1 ? "(" : "");
+    for (int c = 0; c < n; ++c) t.append(c ? ", " : "").append(str(v[c]));
+    return t + (n > 1 ? ")" : "");
+  }
   static i128 shown(const Field& f, int c) {
     if (f.w == 0) return static_cast<i128>(f.got[c]);
     return f.sgn || f.want[c] < 0 ? sign_extend(f.got[c], f.w) : static_cast<i128>(f.got[c]);
@@ -245,15 +235,15 @@ constexpr long kSameLatency = -2;  // the same for every item (learnt from the f
 
 template <class Top, class Item>
 struct Stream {
-  std::function<void(Inputs&, Top&, const Item&)> inputs;
-  std::function<void(Outputs&, const Top&, const Item&)> outputs;
-  std::function<std::string(const Item&)> what;  // where the item came from (reports)
-  std::function<bool(const Item&)> yields;       // the item gives a result (default: every one)
-  long latency = kAnyLatency;                     // cycles from taken to valid_o
-  int tag_w = 0;                                  // > 0: a random tag_i, tag_o compared
-  Traffic traffic;
+  std::function<void(Inputs&, Top&, const Item&)> inputs{};
+  std::function<void(Outputs&, const Top&, const Item&)> outputs{};
+  std::function<std::string(const Item&)> what{};  // where the item came from (reports)
+  std::function<bool(const Item&)> yields{};       // the item gives a result (default: every one)
+  long latency = kAnyLatency;                      // cycles from taken to valid_o
+  int tag_w = TAG_W;  // > 0: a random tag_i, tag_o compared (0: none, or the bench's own)
+  Traffic traffic{};
   long timeout = 0;  // cycles; 0: 4 per item + 1000
-  std::function<std::string(const Top&, const Cycle&)> monitor;  // after the outputs; "": fine
+  std::function<std::string(const Top&, const Cycle&)> monitor{};  // after the outputs; "": fine
 };
 
 struct RunResult {
@@ -291,7 +281,9 @@ class Testbench {
 #endif
   }
   Top& top() { return *top_; }
-  long vectors(long fallback) const { return vector_count(fallback); }
+  long vectors(long fallback) const {  // RPU_VECTORS, else the testbench's default
+    return static_cast<long>(env_u64("RPU_VECTORS", static_cast<std::uint64_t>(fallback)));
+  }
   long cycle() const { return cycle_; }
   long matched() const { return matched_; }
   void add_matched(long n) { matched_ += n; }
@@ -344,6 +336,8 @@ class Testbench {
     std::printf("\n");
     return 0;
   }
+  // A coverage verdict (Tally::too_weak): true, after its FAILURE line, where it names a gap.
+  bool weak(const std::string& why) { return !why.empty() && fail("%s", why.c_str()); }
   // One run, then pass(details): a testbench's exit status.
   template <class Items, class Item = typename Items::value_type, class... Args>
   int check(const Items& items, const Stream<Top, Item>& s, const char* fmt = nullptr,

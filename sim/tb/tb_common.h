@@ -1,12 +1,16 @@
 // The helpers every unit testbench's vector generator shares: the build's hardware parameters,
 // the demo scenes, random values of a given width, a flat guide as the descriptor compiler
-// forms it, and values as text. (The testbench itself: tb_base.h.)
+// forms it, values as text and the tally of what the vectors exercise. (The testbench itself:
+// tb_base.h.)
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "bits.h"
 #include "model/hw_params.h"
@@ -91,6 +95,17 @@ inline scene::CompiledScene compiled_demo_scene(const std::string& name) {
   return scene::compile_scene(demo_scene(name));
 }
 
+// Narrow direction formats (DirFrac < 16): the compiler refuses a view whose pixel spans fewer
+// than ref::Precision::kRefuse direction LSBs (curve12 at 256 pixels spans 13 at FV = 12), so the
+// frame shrinks to 32 pixels on its longer side; `keep_odd`: an odd height stays odd.
+inline void shrink_for_dir_frac(scene::Camera& c, int dir_frac, bool keep_odd) {
+  if (dir_frac >= 16) return;
+  const int side = std::max(c.width, c.height), odd = keep_odd && c.height % 2;
+  c.width = std::max(1, c.width * 32 / side);
+  c.height = std::max(1, c.height * 32 / side);
+  if (odd && c.height % 2 == 0) ++c.height;
+}
+
 // Random values (each draws two 64-bit numbers, then what its name says).
 // `width` random bits (width ≤ 128).
 inline i128 random_bits(std::mt19937_64& rng, int width) {
@@ -122,10 +137,18 @@ inline i128 random_t(std::mt19937_64& rng, int t_frac) {
     default: return random_bits(rng, t_frac + 1) % (one + 1);
   }
 }
-// Whether every component of v fits a w-bit two's-complement port.
+// A uniform double in [lo, hi) (one std::uniform_real_distribution draw).
+inline double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+// Whether every component of v fits a w-bit two's-complement port; whether v (of either sign)
+// fits a w-bit unsigned one.
 template <class V>
 bool fits_signed3(const V& v, int w) {
   return fixed::fits_signed(v.x, w) && fixed::fits_signed(v.y, w) && fixed::fits_signed(v.z, w);
+}
+inline bool fits_unsigned(i128 v, int w) {
+  return v >= 0 && fixed::fits_unsigned(static_cast<u128>(v), w);
 }
 // Vectors: integer to double and back (rounded), a random unit direction, and a direction
 // quantised as the ray generator's v̂ (Q(2.FV); zero for a zero vector).
@@ -175,5 +198,53 @@ std::string str(const V& v) {
   return s;
 }
 inline std::string to_string(i128 v) { return str(v); }
+
+// What the vectors exercise: counts of named properties (columns) of the items of each named
+// category (rows: the sources, the surface types...), printed as a table; too_weak names the
+// first count of the given columns below its minimum ("" when there is none).
+class Tally {
+ public:
+  Tally(std::vector<std::string> rows, std::vector<std::string> cols)
+      : rows_(std::move(rows)), cols_(std::move(cols)), n_(rows_.size() * cols_.size()) {}
+  template <size_t N>
+  Tally(const char* const (&rows)[N], std::vector<std::string> cols)
+      : Tally(std::vector<std::string>(rows, rows + N), std::move(cols)) {}
+  // One item of category `row`: a value for each column, in order (true counts 1).
+  template <class... V>
+  void add(int row, V... v) {
+    size_t k = static_cast<size_t>(row) * cols_.size();
+    ((n_[k++] += static_cast<long>(v)), ...);
+  }
+  long operator()(int row, int col) const {
+    return n_[static_cast<size_t>(row) * cols_.size() + static_cast<size_t>(col)];
+  }
+  long total(int col) const {
+    long t = 0;
+    for (size_t r = 0; r < rows_.size(); ++r) t += (*this)(static_cast<int>(r), col);
+    return t;
+  }
+  void print(const char* title) const {
+    std::printf("  %s:\n", title);
+    for (size_t r = 0; r < rows_.size(); ++r) {
+      std::printf("    %-24s", rows_[r].c_str());
+      for (size_t c = 0; c < cols_.size(); ++c)
+        std::printf("%s %7ld %s", c ? "," : "", n_[r * cols_.size() + c], cols_[c].c_str());
+      std::printf("\n");
+    }
+  }
+  std::string too_weak(std::initializer_list<int> cols, long min) const {
+    for (size_t r = 0; r < rows_.size(); ++r)
+      for (int c : cols)
+        if ((*this)(static_cast<int>(r), c) < min)
+          return "the vectors are too weak: " + rows_[r] + " has " +
+                 std::to_string((*this)(static_cast<int>(r), c)) + " " + cols_[c] + " (under " +
+                 std::to_string(min) + ")";
+    return "";
+  }
+
+ private:
+  std::vector<std::string> rows_, cols_;
+  std::vector<long> n_;
+};
 
 }  // namespace rpu::sim

@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  sim::Stream<Vrpu_cordic, Item> s;
+  sim::Stream<Vrpu_cordic, Item> s{.latency = ref::cordic_latency(kConfig, kVectoring)};
   s.inputs = [](sim::Inputs& in, Vrpu_cordic& t, const Item& it) {
     in("x", t.x_i, it.x, kW)("y", t.y_i, it.y, kW)("angle", t.angle_i, it.angle, kAW);
   };
@@ -103,8 +103,6 @@ int main(int argc, char** argv) {
     else o.s("x", t.x_o, it.want_x, kW);
     o.s("y", t.y_o, it.want_y, kW)("angle", t.angle_o, it.want_angle, kAW);
   };
-  s.latency = ref::cordic_latency(kConfig, kVectoring);
-  s.tag_w = TAG_W;
   return tb.check(items, s, "W=%d AW=%d Iters=%d %s, latency %ld, %s", kW, kAW, CORDIC_ITERS,
                   kVectoring ? "vectoring" : "rotation", s.latency,
                   exhaustive ? "exhaustive" : "edges + random");

@@ -96,15 +96,13 @@ int main(int argc, char** argv) {
     }
   }
 
-  sim::Stream<Vrpu_div, Item> s;
+  sim::Stream<Vrpu_div, Item> s{.latency = kQuotW};
   s.inputs = [](sim::Inputs& in, Vrpu_div& t, const Item& it) {
     in("num", t.num_i, static_cast<i128>(it.num), kNumW)("den", t.den_i, static_cast<i128>(it.den), kDenW);
   };
   s.outputs = [](sim::Outputs& o, const Vrpu_div& t, const Item& it) {
     o("quot", t.quot_o, static_cast<i128>(it.quot), kQuotW);
   };
-  s.latency = kQuotW;
-  s.tag_w = TAG_W;
   return tb.check(items, s, "NumW=%d DenW=%d QuotW=%d TagW=%d, %s", kNumW, kDenW, kQuotW, TAG_W,
                   exhaustive ? "exhaustive" : "edges + random");
 }

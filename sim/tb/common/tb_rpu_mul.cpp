@@ -82,15 +82,13 @@ int main(int argc, char** argv) {
     }
   }
 
-  sim::Stream<Vrpu_mul, Item> s;
+  sim::Stream<Vrpu_mul, Item> s{.latency = kLatency};
   s.inputs = [](sim::Inputs& in, Vrpu_mul& t, const Item& it) {
     in("a", t.a_i, it.a, kAW)("b", t.b_i, it.b, kBW);
   };
   s.outputs = [](sim::Outputs& o, const Vrpu_mul& t, const Item& it) {
     o("p", t.p_o, it.p, kAW + kBW);
   };
-  s.latency = kLatency;
-  s.tag_w = 1;
   if (!tb.run(items, s)) return 1;
 
   // A reset with every stage holding an operand and valid_i high during it: the flushed operands

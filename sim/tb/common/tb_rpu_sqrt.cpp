@@ -44,15 +44,13 @@ int main(int argc, char** argv) {
     items.push_back({x, ref::sqrt_unit(static_cast<i128>(x), kRadW, SQRT_W, ovf)});
   }
 
-  sim::Stream<Vrpu_sqrt, Item> s;
+  sim::Stream<Vrpu_sqrt, Item> s{.latency = sim::kSameLatency};
   s.inputs = [&](sim::Inputs& in, Vrpu_sqrt& t, const Item& it) {
     in("rad", t.rad_i, static_cast<i128>(it.rad), kRadW);
   };
   s.outputs = [&](sim::Outputs& o, const Vrpu_sqrt& t, const Item& it) {
     o("root", t.root_o, it.root, 64);
   };
-  s.latency = sim::kSameLatency;
-  s.tag_w = 1;
   return tb.check(items, s, "RadW=%d SqrtW=%d, %s", kRadW, SQRT_W,
                   exhaustive ? "exhaustive" : "edges + random");
 }

@@ -38,13 +38,11 @@ inline void edit_guide(const ref::HwParams& p, i128 L2, std::mt19937_64& rng, re
   if (kind < 5) {  // flat: h from just above the threshold to 2^12 times it
     const int octave =
         how.flat_near_threshold ? -6 : static_cast<int>(rng() % 13) + how.octave_shift;
-    const double h = L * ref::HwParams::kFlatRatio *
-                     (1.0 + 1e-6 + std::ldexp(std::uniform_real_distribution<double>(0, 1)(rng),
-                                              octave));
+    const double h =
+        L * ref::HwParams::kFlatRatio * (1.0 + 1e-6 + std::ldexp(uniform(rng, 0, 1), octave));
     set_flat_guide(g, L2, h, p.t_frac);
   } else if (kind == 5) {  // arc, h in [L/2, 16·L]
-    g.h = static_cast<std::int64_t>(
-        std::llround(L * std::uniform_real_distribution<double>(0.5, 16)(rng)));
+    g.h = static_cast<std::int64_t>(std::llround(L * uniform(rng, 0.5, 16)));
     g.mode = ref::GuideMode::kArc;
   } else if (kind == 6 || !how.unused_mode) {
     g.mode = ref::GuideMode::kStraight;
@@ -63,8 +61,7 @@ inline bool sample_pred1_pair(const scene::CompiledScene& sc, const ref::ModelSc
                               const ref::HwParams& p, std::mt19937_64& rng, SampledPair& out) {
   const size_t k = rng() % m.curve_segments.size();
   int ci, cj;
-  const Vec3 world = scene::curve_point(sc.curve_segments[k].geom,
-                                        std::uniform_real_distribution<double>(0, 1)(rng));
+  const Vec3 world = scene::curve_point(sc.curve_segments[k].geom, uniform(rng, 0, 1));
   if (!scene::project_to_pixel(sc.camera, world, ci, cj)) return false;
   ci = std::clamp(ci + static_cast<int>(rng() % 5) - 2, 0, m.camera.width - 1);
   cj = std::clamp(cj + static_cast<int>(rng() % 5) - 2, 0, m.camera.height - 1);

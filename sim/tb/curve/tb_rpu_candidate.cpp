@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  sim::Stream<Vrpu_candidate, Item> s;
+  sim::Stream<Vrpu_candidate, Item> s{.latency = sim::kSameLatency, .tag_w = 0};  // its own tag
   s.inputs = [&](sim::Inputs& in, Vrpu_candidate& t, const Item& it) {
     in("m", t.m_i, static_cast<i128>(it.m), p.n + 1)("tag", t.tag_i, it.tag, 1);
     sim::pair_inputs(in, t, p, it.s, it.si);
@@ -113,7 +113,6 @@ int main(int argc, char** argv) {
     o("md", t.md_o, it.want.md, sim::md_width(p))("ovf", t.ovf_o, it.ovf, 1)("tag", t.tag_o, it.tag, 1);
   };
   s.what = [](const Item& it) { return "segment " + std::to_string(it.seg) + (it.edited ? " (edited)" : ""); };
-  s.latency = sim::kSameLatency;
   return tb.check(items, s,
                   "metric %d, %ld pairs edited, %ld of them long flat; %ld saturated, %ld with "
                   "t < 0", METRIC, n_edited, n_long, n_sat, n_neg);

@@ -91,8 +91,8 @@ int main(int argc, char** argv) {
       // The model's own test point on a pixel at or beside the projection of the curve.
       const size_t k_seg = rng() % m.curve_segments.size();
       const auto& s = m.curve_segments[k_seg];
-      const Vec3 world = scene::curve_point(sc.curve_segments[k_seg].geom,
-                                            std::uniform_real_distribution<double>(0, 1)(rng));
+      const Vec3 world =
+          scene::curve_point(sc.curve_segments[k_seg].geom, sim::uniform(rng, 0, 1));
       int ci, cj;
       if (scene::project_to_pixel(sc.camera, world, ci, cj)) {
         it.i = std::clamp(ci + static_cast<int>(rng() % 3) - 1, 0, m.camera.width - 1);
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   long hits = 0;
   for (const Item& it : items) hits += it.want.hit;
 
-  sim::Stream<Vrpu_capture, Item> s;
+  sim::Stream<Vrpu_capture, Item> s{.latency = sim::kSameLatency};
   s.inputs = [&](sim::Inputs& in, Vrpu_capture& t, const Item& it) {
     in.vec("X", t.x_i, it.X, XW)("t", t.t_i, it.t, TW).vec("eye", t.eye_i, it.cam.eye, CW);
     in.vec("e_left", t.e_left_i, it.ray.e_left, EW).vec("e_right", t.e_right_i, it.ray.e_right, EW);
@@ -132,7 +132,5 @@ int main(int argc, char** argv) {
     return "pixel (" + std::to_string(it.i) + ", " + std::to_string(it.j) + ")" +
            (it.random_edges ? ", random edge vectors" : "");
   };
-  s.latency = sim::kSameLatency;
-  s.tag_w = 1;
   return tb.check(items, s, "%ld hits", hits);
 }

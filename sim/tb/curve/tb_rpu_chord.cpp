@@ -59,14 +59,12 @@ int main(int argc, char** argv) {
   long saturated = 0;
   for (const Item& it : items) saturated += it.ovf;
 
-  sim::Stream<Vrpu_chord, Item> s;
+  sim::Stream<Vrpu_chord, Item> s{.latency = ref::chord_latency(p)};
   s.inputs = [&](sim::Inputs& in, Vrpu_chord& t, const Item& it) {
     in("dot", t.dot_i, it.dot, DotW)("inv_m", t.inv_m_i, it.inv_m, IW)("inv_s", t.inv_s_i, it.inv_s, kShW);
   };
   s.outputs = [&](sim::Outputs& o, const Vrpu_chord& t, const Item& it) {
     o.s("t", t.t_o, it.t, TW)("ovf", t.ovf_o, it.ovf, 1);
   };
-  s.latency = ref::chord_latency(p);
-  s.tag_w = TAG_W;
   return tb.check(items, s, "DotW=%d InvW=%d TFrac=%d, %ld saturated", DotW, IW, FT, saturated);
 }

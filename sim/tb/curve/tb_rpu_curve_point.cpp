@@ -130,7 +130,8 @@ int main(int argc, char** argv) {
     }
   }
 
-  sim::Stream<Vrpu_curve_point, Op> s;
+  // The latency, as its header says: the products of t, of u, the sum.
+  sim::Stream<Vrpu_curve_point, Op> s{.latency = ref::curve_point_latency(p)};
   s.inputs = [](sim::Inputs& in, Vrpu_curve_point& t, const Op& op) {
     in.vec("p1", t.p1_i, op.seg.p1, kCW).vec("d", t.d_i, op.seg.d, kDW);
     in.vec("u1", t.u1_i, op.seg.guide[0].u, kUW).vec("u2", t.u2_i, op.seg.guide[1].u, kUW);
@@ -141,8 +142,6 @@ int main(int argc, char** argv) {
     o.vec("X", t.x_o, op.x, kXW);
   };
   s.what = [](const Op& op) { return op.full_range ? "full range, modulo 2^XW" : "scene"; };
-  s.latency = ref::curve_point_latency(p);  // its header: products of t, of u, the sum
-  s.tag_w = TAG_W;
   return tb.check(ops, s,
                   "CoordW=%d TFrac=%d UnitFrac=%d TagW=%d latency %ld; %zu segments: %ld edges + "
                   "%ld random scene items, max |X| = %.4f·2^CW; %ld full-range items modulo "

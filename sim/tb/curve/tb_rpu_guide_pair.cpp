@@ -78,10 +78,7 @@ int main(int argc, char** argv) {
   const auto pair_of = [](Op g1, Op g2, i128 t) {
     g1.t = t;
     g2.l2 = g1.l2;
-    PairOp op;
-    op.g[0] = g1;
-    op.g[1] = g2;
-    return op;
+    return PairOp{{g1, g2}, {}, false};
   };
   const i128 one = i128{1} << kFT;
   const i128 t_edges[] = {0, 1, 2, one / 2, one / 2 + 1, one - 1, one, one + 1, -1,
@@ -165,7 +162,8 @@ int main(int argc, char** argv) {
     negative_g += (op.want.g1 < 0) + (op.want.g2 < 0);
   }
 
-  sim::Stream<Vrpu_guide_pair, PairOp> s;
+  // The latency, as its header says: w, the products, the roots.
+  sim::Stream<Vrpu_guide_pair, PairOp> s{.latency = ref::guide_pair_latency(p)};
   s.inputs = [](sim::Inputs& in, Vrpu_guide_pair& t, const PairOp& op) {
     const auto hh = [&](const Op& g) { return kHhIn ? g.h * g.h : in.random(kRadW); };
     in("t", t.t_i, op.g[0].t, kTW)("L2", t.l2_i, op.g[0].l2, kL2W);
@@ -180,8 +178,6 @@ int main(int argc, char** argv) {
     o.s("g1", t.g1_o, op.want.g1, kGW).s("g2", t.g2_o, op.want.g2, kGW)("w", t.w_o, op.want.w, kWW);
     o("ovf", t.ovf_o, op.ovf, 1);
   };
-  s.latency = ref::guide_pair_latency(p);  // its header: w, the products, the roots
-  s.tag_w = TAG_W;
   return tb.check(ops, s,
                   "CoordW=%d TFrac=%d SqrtW=%d HhIn=%d TagW=%d latency %ld; %ld edges, %ld "
                   "descriptor-like, %ld full-range; %ld arc, %ld flat guides, %ld overflow, %ld "

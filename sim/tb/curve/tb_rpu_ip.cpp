@@ -69,8 +69,8 @@ int edit_pair(const ref::HwParams& p, std::mt19937_64& rng, ref::SegmentDesc& s,
     // set), guide 2 straight: for t ≈ −4 the guides vanish (w = 0), X is p1 + d·t.
     const double L = std::sqrt(static_cast<double>(s.L2));
     s.guide[0].mode = ref::GuideMode::kArc;
-    s.guide[0].h = static_cast<std::int64_t>(std::llround(
-        L * std::uniform_real_distribution<double>(8, ref::HwParams::kFlatRatio)(rng)));
+    s.guide[0].h = static_cast<std::int64_t>(
+        std::llround(L * sim::uniform(rng, 8, ref::HwParams::kFlatRatio)));
     s.guide[1].mode = ref::GuideMode::kStraight;
     si.alpha = -top + static_cast<i128>(rng() % 4096);
     si.beta = static_cast<i128>(rng() % 4096);
@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
 #endif
   }
 
-  sim::Stream<Dut, Item> s;
+  sim::Stream<Dut, Item> s{.tag_w = 0};  // the step's tag: the item's own
   s.inputs = [&](sim::Inputs& in, Dut& t, const Item& it) {
     sim::pair_inputs(in, t, p, it.s, it.si);
     in("ctx", t.ctx_i, it.id, 32);

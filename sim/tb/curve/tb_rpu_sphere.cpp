@@ -23,6 +23,7 @@ using fixed::i64;
 const ref::HwParams kP = sim::tb_params();
 const int CW = kP.coord_w, FV = kP.dir_frac, DirW = kP.dir_w(), DiffW = kP.diff_w();
 const int R2W = kP.r2_w(), TcW = CW + 4, HcW = CW + 3, TW = kP.t_w();
+const i64 kTopC = (i64{1} << (CW - 1)) - 1, kMinC = -(i64{1} << (CW - 1));  // CW's ends
 constexpr int kInvSW = 7;
 
 enum Source { kCurve12, kRandomScene, kEdge, kCorner, kRandom, kSources };
@@ -61,9 +62,8 @@ bool fits_ports(const Item& it) {
   const ref::SegmentDesc& s = *it.s;
   using sim::fits_signed3;
   return fits_signed3(it.eye, CW) && fits_signed3(it.vhat, DirW) && fits_signed3(s.c0, CW) &&
-         fits_signed3(s.p1, CW) && fits_signed3(s.d, DiffW) && s.R2 >= 0 && fixed::fits_unsigned(static_cast<u128>(s.R2), R2W) &&
-         s.inv_m >= 0 && fixed::fits_unsigned(static_cast<u128>(s.inv_m), kP.inv_w) &&
-         s.inv_s >= 0 && s.inv_s < (1 << kInvSW);
+         fits_signed3(s.p1, CW) && fits_signed3(s.d, DiffW) && sim::fits_unsigned(s.R2, R2W) &&
+         sim::fits_unsigned(s.inv_m, kP.inv_w) && s.inv_s >= 0 && s.inv_s < (1 << kInvSW);
 }
 
 // The descriptor formula for 1/L² (descriptors.cpp).
@@ -149,10 +149,8 @@ int main(int argc, char** argv) {
   }
 
   // ---- ellipse6 has no curve segments: nothing for this unit ----
-  {
-    const scene::CompiledScene sc = sim::compiled_demo_scene("ellipse6");
-    std::printf("ellipse6: %zu curve segments (skipped)\n", sc.curve_segments.size());
-  }
+  std::printf("ellipse6: %zu curve segments (skipped)\n",
+              sim::compiled_demo_scene("ellipse6").curve_segments.size());
 
   // ---- random compiled scenes ----
   {
@@ -184,8 +182,7 @@ int main(int argc, char** argv) {
 
   // ---- range edges: the model test's vector, and an eye-at-a-corner sweep ----
   {
-    const i64 top_c = (i64{1} << (CW - 1)) - 1, min_c = -(i64{1} << (CW - 1));
-    const i64 one = i64{1} << FV;
+    const i64 top_c = kTopC, min_c = kMinC, one = i64{1} << FV;
     ref::SegmentDesc s;  // tests/test_model.cpp Overflow.RangeEdgesSaturateAndFlag, CW-scaled
     s.c0 = {top_c - 10, top_c - 10, top_c - 10};
     s.R2 = i128{1} << (2 * CW - 2);
@@ -195,8 +192,7 @@ int main(int argc, char** argv) {
         Item{kEdge, 0, 0, 0, {top_c, top_c, top_c}, {one * 7 / 10, one * 7 / 10, 0}, keep(s)});
     int idx = 1;
     const i128 r2s[] = {static_cast<i128>(fixed::max_unsigned(R2W)), i128{1} << (2 * CW),
-                        i128{1} << (2 * CW - 2),
-                        i128{1} << CW, 100};
+                        i128{1} << (2 * CW - 2), i128{1} << CW, 100};
     for (int c = 0; c < 8; ++c) {
       const ref::IVec3 eye = {c & 1 ? top_c : min_c, c & 2 ? top_c : min_c, c & 4 ? top_c : min_c};
       for (int dn = 0; dn < 30; ++dn) {
@@ -228,7 +224,7 @@ int main(int argc, char** argv) {
 
   // ---- format corners: eye, c0 and v̂ at their extremes (the width bounds of tc, disc, t) ----
   {
-    const i64 top_c = (i64{1} << (CW - 1)) - 1, min_c = -(i64{1} << (CW - 1));
+    const i64 top_c = kTopC, min_c = kMinC;
     const i64 vmax = (i64{1} << (DirW - 1)) - 1, vmin = -(i64{1} << (DirW - 1));
     const i64 dmax = (i64{1} << (DiffW - 1)) - 1, dmin = -(i64{1} << (DiffW - 1));
     int idx = 0;
@@ -282,7 +278,7 @@ int main(int argc, char** argv) {
   }
 
   // ---- statistics of what is driven ----
-  long per_src[kSources] = {}, per_src_hit[kSources] = {}, per_src_ovf[kSources] = {};
+  sim::Tally by_src(kSourceName, {"vectors", "with pred1", "with overflow"});
   long inside = 0, sat_rad = 0, sat_miss = 0, all_hits = 0;
   for (Item& it : items) {
     if (!fits_ports(it))
@@ -291,9 +287,7 @@ int main(int argc, char** argv) {
                      sim::str(it.s->R2).c_str());
     const Expected e = it.want = expected(it);
     const ref::SegmentDesc& sg = *it.s;
-    ++per_src[it.src];
-    per_src_hit[it.src] += e.si.pred1;
-    per_src_ovf[it.src] += e.ovf;
+    by_src.add(it.src, 1, e.si.pred1, e.ovf);
     all_hits += e.si.pred1;
     inside += e.si.pred1 && e.si.tc < e.si.half_chord;
     const i128 disc = sg.R2 + e.si.tc * e.si.tc -
@@ -303,15 +297,13 @@ int main(int argc, char** argv) {
     sat_rad += disc > static_cast<i128>(fixed::max_unsigned(rad_w));
     sat_miss += !e.si.pred1 && e.ovf;
   }
-  for (int k = 0; k < kSources; ++k)
-    std::printf("  %-14s %7ld vectors, %7ld with pred1, %6ld with overflow\n", kSourceName[k],
-                per_src[k], per_src_hit[k], per_src_ovf[k]);
+  by_src.print("per source");
   std::printf("  t1 clamped to the eye (eye inside the sphere): %ld; radicand saturated: %ld "
               "(%ld of them flagged without pred1)\n", inside, sat_rad, sat_miss);
 
   std::shuffle(items.begin(), items.end(), rng);  // mix the sources
 
-  sim::Stream<Vrpu_sphere, Item> s;
+  sim::Stream<Vrpu_sphere, Item> s{.latency = ref::sphere_latency(p)};
   s.inputs = [&](sim::Inputs& in, Vrpu_sphere& t, const Item& it) {
     const ref::SegmentDesc& sg = *it.s;
     in.vec("eye", t.eye_i, it.eye, CW).vec("vhat", t.vhat_i, it.vhat, DirW).vec("c0", t.c0_i, sg.c0, CW);
@@ -330,8 +322,6 @@ int main(int argc, char** argv) {
     return std::string(kSourceName[it.src]) + ", pixel (" + std::to_string(it.i) + ", " +
            std::to_string(it.j) + "), segment " + std::to_string(it.seg);
   };
-  s.latency = ref::sphere_latency(p);
-  s.tag_w = TAG_W;
   return tb.check(items, s,
                   "CoordW=%d DirFrac=%d TFrac=%d InvW=%d SqrtW=%d, latency %ld, %ld with pred1", CW,
                   FV, kP.t_frac, kP.inv_w, kP.sqrt_w, s.latency, all_hits);

@@ -23,6 +23,7 @@
 // branch), 5 % of them flipped. RPU_VECTORS sets the point count (default 40,000).
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -57,23 +58,15 @@ struct Item {
   ref::IndicatorTrace trace;
 };
 
-struct Surf {
-  std::string name;  // scene file and index
-  scene::CompiledSurface cs;
-  ref::SurfaceDesc desc;
-};
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+using sim::uniform;
 i128 clamp_lw(i128 v) {
   return std::clamp<i128>(v, fixed::min_signed(kLw), fixed::max_signed(kLw));
 }
 
 // Whether the descriptor fits the unit's ports and contract (the scenes' do; tb checks).
 std::string port_problem(const ref::SurfaceDesc& s) {
-  const auto fits_s = [](i128 v, int w) { return v >= fixed::min_signed(w) && v <= fixed::max_signed(w); };
-  const auto fits_u = [](i128 v, int w) { return v >= 0 && static_cast<u128>(v) <= fixed::max_unsigned(w); };
+  const auto fits_s = fixed::fits_signed;
+  const auto fits_u = sim::fits_unsigned;
   if (!fits_u(s.sx, kKf + 1) || !fits_u(s.sy, kKf + 1) || !fits_u(s.sz, kKf + 1)) return "sx/sy/sz";
   if (s.r2 < 0 || s.r2 > (i128{1} << (2 * kLw))) return "r2 > 2^(2LW)";
   if (!fits_s(s.kd, kKf + 2) || !fits_s(s.ke2, kKf + 2)) return "kd/ke2";
@@ -94,21 +87,15 @@ int main(int argc, char** argv) {
   const int kLatency = ref::indicator_latency(p);
   std::printf("tb_rpu_indicator: LW %d, AW %d, %d lanes, latency %d\n", kLw, kAw, kLanes, kLatency);
 
-  std::vector<Surf> surfs;
-  for (const char* name : sim::kSurfaceScenes) {
-    const scene::CompiledScene sc = sim::compiled_demo_scene(name);
-    const ref::ModelScene m = ref::quantize_scene(sc, p);
-    for (size_t k = 0; k < m.surfaces.size(); ++k) {
-      Surf s{std::string(name) + "[" + std::to_string(k) + "]", sc.surfaces[k], m.surfaces[k]};
-      const std::string problem = port_problem(s.desc);
-      if (!problem.empty())
-        return tb.fail("%s: the descriptor does not fit the unit's ports (%s)", s.name.c_str(),
-                       problem.c_str());
-      surfs.push_back(std::move(s));
-    }
-  }
+  std::deque<scene::CompiledScene> scenes;
+  const std::vector<sim::SurfCase> surfs = sim::load_surface_cases(p, scenes);
   bool have_type[5] = {};
-  for (const Surf& s : surfs) have_type[static_cast<int>(s.desc.type)] = true;
+  for (const sim::SurfCase& s : surfs) {
+    if (const std::string problem = port_problem(s.d); !problem.empty())
+      return tb.fail("%s: the descriptor does not fit the unit's ports (%s)", s.name.c_str(),
+                     problem.c_str());
+    have_type[static_cast<int>(s.d.type)] = true;
+  }
   for (int t = 0; t < 5; ++t)
     if (!have_type[t]) return tb.fail("no %s among the demo scenes' surfaces", kTypeName[t]);
 
@@ -142,7 +129,7 @@ int main(int argc, char** argv) {
   // Edge points first, for every surface.
   const i128 edge[] = {0, 1, -1, lw_max, lw_min, lw_max - 1, lw_min + 1};
   for (int k = 0; k < static_cast<int>(surfs.size()); ++k) {
-    const ref::SurfaceDesc& d = surfs[static_cast<size_t>(k)].desc;
+    const ref::SurfaceDesc& d = surfs[static_cast<size_t>(k)].d;
     for (i128 x : edge)
       for (i128 y : edge)
         for (i128 z : edge) add(k, kEdge, d, {x, y, z});
@@ -177,32 +164,19 @@ int main(int argc, char** argv) {
 
   while (static_cast<long>(items.size()) < count) {
     const int k = static_cast<int>(rng() % surfs.size());
-    const Surf& S = surfs[static_cast<size_t>(k)];
-    const ref::SurfaceDesc& d = S.desc;
+    const sim::SurfCase& S = surfs[static_cast<size_t>(k)];
+    const ref::SurfaceDesc& d = S.d;
     const double f = std::ldexp(1.0, d.local_frac);
     const unsigned kind = static_cast<unsigned>(rng() % 100);
     if (kind < 30) {  // the cube around the bounding sphere
-      const double rad = S.cs.local_radius * 1.25;
-      const Vec3 c = S.cs.local_centre;
+      const double rad = S.cs->local_radius * 1.25;
+      const Vec3 c = S.cs->local_centre;
       const auto coord = [&](double cc) {
         return clamp_lw(static_cast<i128>(std::llround((cc + uniform(rng, -rad, rad)) * f)));
       };
       add(k, kSphere, d, {coord(c.x), coord(c.y), coord(c.z)});
     } else if (kind < 85) {  // near the surface
-      const scene::SurfaceGeometry geom(S.cs.surface);
-      const scene::SurfaceParams& q = S.cs.surface.p;
-      double phi = uniform(rng, 0, 2 * std::numbers::pi), v = 0;
-      switch (d.type) {
-        case SurfaceType::kEllipsoid:
-        case SurfaceType::kReliefEllipsoid: v = uniform(rng, q.y_min, q.y_max); break;
-        case SurfaceType::kSpiral:
-        case SurfaceType::kSnail:
-          phi = uniform(rng, 0, q.phi_max);
-          v = uniform(rng, 0, 2 * std::numbers::pi);
-          break;
-        case SurfaceType::kRocket: v = uniform(rng, -q.c, q.b + q.e); break;
-      }
-      const Vec3 pt = geom.point(phi, v) * f;
+      const Vec3 pt = sim::random_seed_point(S.cs->surface, rng) * f;
       const double spread = rng() % 2 ? 8.0 : std::ldexp(1.0, static_cast<int>(rng() % 13));
       const auto coord = [&](double cc) {
         return clamp_lw(static_cast<i128>(std::llround(cc + uniform(rng, -spread, spread))));
@@ -229,7 +203,7 @@ int main(int argc, char** argv) {
   // them with kd and ke2 redrawn over KF + 2 bits, r2 bisected.
   std::vector<int> bsurfs;
   for (int k = 0; k < static_cast<int>(surfs.size()); ++k) {
-    const SurfaceType t = surfs[static_cast<size_t>(k)].desc.type;
+    const SurfaceType t = surfs[static_cast<size_t>(k)].d.type;
     if (t == SurfaceType::kSpiral || t == SurfaceType::kSnail || t == SurfaceType::kReliefEllipsoid)
       bsurfs.push_back(k);
   }
@@ -249,24 +223,36 @@ int main(int argc, char** argv) {
   };
   const i128 r2_max = i128{1} << (2 * kLw);
   const double half = std::ldexp(1.0, kLw - 1);
+  // A spiral point on an axis (ψ = ¼ or ¾ turn, the latter with x < 0: 4ψ ≡ 0, so (u, w) =
+  // (ρ − ρ_a, y − y_a)), sx = sy = 2^KF (the scaled offsets are 4u, 4w), r2 = 2^(2LW − 8), with
+  // the given a_turn and k_turn (no point where they do not fit).
+  const auto on_axis = [&](int k, ref::SurfaceDesc d, double rho, double yv, double a, double kt,
+                           bool left, bool last) {
+    const double tmax = std::ldexp(1.0, kTurnW - 1) - 2;
+    if (std::fabs(a) > tmax || std::fabs(kt) > tmax) return;
+    d.rho0 = static_cast<std::int64_t>(std::llround(rho));
+    d.a_turn = static_cast<std::int64_t>(std::llround(a));
+    d.k_turn = static_cast<std::int64_t>(std::llround(kt));
+    d.sx = d.sy = std::int64_t{1} << kKf;
+    d.r2 = i128{1} << (2 * kLw - 8);
+    const i128 rr = static_cast<i128>(std::llround(rho));
+    add_branch(k, kBoundary, d, {left ? -rr : rr, static_cast<i128>(std::llround(yv)), 0}, left,
+               last);
+  };
   // The spiral's lanes at the limits of their offsets (before the random boundary points): the
-  // point on an axis (ψ = ¾ turn, x < 0: 4ψ ≡ 0, so (u, w) = (ρ − ρ_a, y − y_a)), sx = sy = 2^KF
-  // (the scaled offsets are 4u, 4w), r2 = 2^(2LW − 8); a_turn or k_turn set so that turn m's
-  // ρ − ρ_a or y − y_a is ±2^e (just above, just below, 1.2×), e = LW − 4 .. LW + 10, the other
-  // offset small,
-  // with all lanes enabled and with lanes 0 .. m: every lane's saturation of the rotation inputs
-  // (and its overflow bit) and clamps of the squares at their edges.
+  // point on an axis at ψ = ¾ turn; a_turn or k_turn set so that turn m's ρ − ρ_a or y − y_a is
+  // ±2^e (just above, just below, 1.2×), e = LW − 4 .. LW + 10, the other offset small, with all
+  // lanes enabled and with lanes 0 .. m: every lane's saturation of the rotation inputs (and its
+  // overflow bit) and clamps of the squares at their edges.
   for (int k = 0; k < static_cast<int>(surfs.size()); ++k) {
-    if (surfs[static_cast<size_t>(k)].desc.type != SurfaceType::kSpiral) continue;
+    if (surfs[static_cast<size_t>(k)].d.type != SurfaceType::kSpiral) continue;
     for (int m = 0; m < kLanes; ++m)
       for (int e = kLw - 4; e <= kLw + 10; ++e)
         for (int sgn : {1, -1})
           for (int which = 0; which < 2; ++which)
             for (int f = 0; f < 6; ++f) {
-              ref::SurfaceDesc d = surfs[static_cast<size_t>(k)].desc;
+              ref::SurfaceDesc d = surfs[static_cast<size_t>(k)].d;
               d.full_turns = f < 3 ? kLanes : m + 1;  // m + 1: the overflow bit is lane m's
-              d.sx = d.sy = std::int64_t{1} << kKf;
-              d.r2 = i128{1} << (2 * kLw - 8);
               const double frac = f % 3 == 0   ? 1 + uniform(rng, 0, 1.0 / 256)
                                   : f % 3 == 1 ? 1 - uniform(rng, 0, 1.0 / 256)
                                                : 1.2;
@@ -276,15 +262,7 @@ int main(int argc, char** argv) {
               const double rho = uniform(rng, half / 8, half / 2);
               const double yv = uniform(rng, -half / 4, half / 4);
               const double phi = 0.75 + m;
-              const double a = -du / phi, kt = (yv - dw) / phi;
-              const double tmax = std::ldexp(1.0, kTurnW - 1) - 2;
-              if (std::fabs(a) > tmax || std::fabs(kt) > tmax) continue;
-              d.rho0 = static_cast<std::int64_t>(std::llround(rho));
-              d.a_turn = static_cast<std::int64_t>(std::llround(a));
-              d.k_turn = static_cast<std::int64_t>(std::llround(kt));
-              const ref::WVec3 l{-static_cast<i128>(std::llround(rho)),
-                                 static_cast<i128>(std::llround(yv)), 0};
-              add_branch(k, kBoundary, d, l, true, false);
+              on_axis(k, d, rho, yv, -du / phi, (yv - dw) / phi, true, false);
             }
   }
   // The snail's lane-1 product at a perfect square: the point (0, ±y, z0) with a small z0 (ψ ≈ 0),
@@ -292,10 +270,10 @@ int main(int argc, char** argv) {
   // within 2 of y² (1 or 2 above it when its bit 1 is set, else 0 or 1 below): the bit decided by
   // the product's last bits.
   for (int k = 0; k < static_cast<int>(surfs.size()); ++k) {
-    if (surfs[static_cast<size_t>(k)].desc.type != SurfaceType::kSnail) continue;
+    if (surfs[static_cast<size_t>(k)].d.type != SurfaceType::kSnail) continue;
     int added = 0;
     for (i128 z0 = 1; z0 <= 6 && added < 48; ++z0) {
-      ref::SurfaceDesc d = surfs[static_cast<size_t>(k)].desc;
+      ref::SurfaceDesc d = surfs[static_cast<size_t>(k)].d;
       d.full_turns = 2;
       const ref::IndicatorTrace t0 = twin_trace(d, {0, 0, z0}, false, false);
       const i128 rho = t0.rho;
@@ -327,8 +305,8 @@ int main(int argc, char** argv) {
   const long boundary_end = static_cast<long>(items.size()) + n_boundary;
   while (static_cast<long>(items.size()) < boundary_end) {
     const int k = bsurfs[rng() % bsurfs.size()];
-    const Surf& S = surfs[static_cast<size_t>(k)];
-    ref::SurfaceDesc d = S.desc;
+    const sim::SurfCase& S = surfs[static_cast<size_t>(k)];
+    ref::SurfaceDesc d = S.d;
     const int m = kLanes > 4 && rng() % 4 != 0 ? 4 + static_cast<int>(rng() % (kLanes - 4))
                                                 : static_cast<int>(rng() % kLanes);
     const bool last = rng() % 2;
@@ -338,10 +316,9 @@ int main(int argc, char** argv) {
     const double cs = std::cos(2 * std::numbers::pi * tt), sn = std::sin(2 * std::numbers::pi * tt);
     const auto fits = [&](double v) { return std::fabs(v) < half - 2; };
     if (d.type == SurfaceType::kSpiral && rng() % 3 == 0) {
-      // The point on an axis (ψ = ¼ or ¾ turn: 4ψ ≡ 0, so (u, w) = (ρ − ρ_a, y − y_a)), sx = sy =
-      // 2^KF (the scaled offsets 4u, 4w), r2 = 2^(2LW − 8); a_turn and k_turn chosen so that turn
-      // m's scaled offsets are near ±2^e, e = LW − 2 .. LW + 8, or small: the clamps of the
-      // squares and the saturation of the rotation inputs on either side of their limits.
+      // The point on an axis (on_axis), a_turn and k_turn chosen so that turn m's scaled offsets
+      // are near ±2^e, e = LW − 2 .. LW + 8, or small: the clamps of the squares and the
+      // saturation of the rotation inputs on either side of their limits.
       const bool left = rng() % 2;
       const double rho = uniform(rng, half / 8, half / 2), psi_t = left ? 0.75 : 0.25;
       const auto target = [&] {
@@ -352,17 +329,7 @@ int main(int argc, char** argv) {
       };
       const double phi = psi_t + m, tu = target(), tw = target();
       const double yv = uniform(rng, -half / 4, half / 4);
-      const double a = -tu / 4 / phi, kt = (yv - tw / 4) / phi;
-      const double tmax = std::ldexp(1.0, kTurnW - 1) - 2;
-      if (std::fabs(a) > tmax || std::fabs(kt) > tmax) continue;
-      d.rho0 = static_cast<std::int64_t>(std::llround(rho));
-      d.a_turn = static_cast<std::int64_t>(std::llround(a));
-      d.k_turn = static_cast<std::int64_t>(std::llround(kt));
-      d.sx = d.sy = std::int64_t{1} << kKf;
-      d.r2 = i128{1} << (2 * kLw - 8);
-      const i128 rr = static_cast<i128>(std::llround(rho));
-      add_branch(k, kBoundary, d, {left ? -rr : rr, static_cast<i128>(std::llround(yv)), 0}, left,
-                 last);
+      on_axis(k, d, rho, yv, -tu / 4 / phi, (yv - tw / 4) / phi, left, last);
     } else if (d.type == SurfaceType::kSpiral) {
       const bool neg = rng() % 4 == 0;
       const double amag = uniform(rng, 0.3, 1.0) * 0.7 * half / (kLanes + 1.5);
@@ -443,11 +410,7 @@ int main(int argc, char** argv) {
       const i128 y = bisect(0, ymax, out_at);
       for (const i128 v : {y - 1, y}) add_branch(k, kBoundary, d, {x, ysign * v, z}, xneg, last);
     } else {  // relief
-      const scene::SurfaceGeometry geom(S.cs.surface);
-      const scene::SurfaceParams& q = S.cs.surface.p;
-      const double phi = uniform(rng, 0, 2 * std::numbers::pi);
-      const double v = uniform(rng, q.y_min, q.y_max);
-      const Vec3 pt = geom.point(phi, v) * std::ldexp(1.0, d.local_frac);
+      const Vec3 pt = sim::random_seed_point(S.cs->surface, rng) * std::ldexp(1.0, d.local_frac);
       const auto coord = [&](double cc) {
         return clamp_lw(static_cast<i128>(std::llround(cc + uniform(rng, -8, 8))));
       };
@@ -472,43 +435,32 @@ int main(int argc, char** argv) {
   }
 
   // What the vectors exercise.
-  long n_type[5] = {}, n_in[5] = {}, n_ovf = 0, n_lane_hi = 0, n_rocket_region[3] = {},
-       n_rocket_in[3] = {}, n_d2_neg = 0, n_src[kSources] = {};
+  sim::Tally by_src(kSourceName, {"points"});
+  sim::Tally by_type(sim::kSurfaceTypeName, {"points", "inside", "outside"});
+  sim::Tally rocket({"rocket fins", "rocket cylinder", "rocket cone"}, {"points", "inside"});
+  long n_ovf = 0, n_lane_hi = 0, n_d2_neg = 0;
   for (const Item& it : items) {
-    const int t = static_cast<int>(it.desc.type);
-    ++n_type[t];
-    n_in[t] += it.inside;
+    by_src.add(it.source, 1);
+    by_type.add(static_cast<int>(it.desc.type), 1, it.inside, !it.inside);
     n_ovf += it.ovf;
-    ++n_src[it.source];
     n_lane_hi += (it.trace.turn_inside >> 1) != 0;
-    if (it.desc.type == SurfaceType::kRocket) {
-      const int region = it.l.y <= 0 ? 0 : it.l.y > it.desc.rocket_b ? 2 : 1;
-      ++n_rocket_region[region];
-      n_rocket_in[region] += it.inside;
-    }
+    if (it.desc.type == SurfaceType::kRocket)
+      rocket.add(it.l.y <= 0 ? 0 : it.l.y > it.desc.rocket_b ? 2 : 1, 1, it.inside);
     if (it.desc.type == SurfaceType::kReliefEllipsoid) {
       const i128 ys = fixed::truncate(it.l.y * it.desc.sy, kKf - 2);
       n_d2_neg += ys * ys >= it.desc.r2;
     }
   }
-  std::printf("tb_rpu_indicator: %zu points: ", items.size());
-  for (int s = 0; s < kSources; ++s) std::printf("%s %ld, ", kSourceName[s], n_src[s]);
-  std::printf("\n  inside / points per type:");
-  for (int t = 0; t < 5; ++t) std::printf(" %s %ld / %ld,", kTypeName[t], n_in[t], n_type[t]);
-  std::printf("\n  overflow %ld, a turn above the first holding the point %ld, rocket fins / "
-              "cylinder / cone inside %ld/%ld %ld/%ld %ld/%ld, relief s²m² ≤ 0 %ld\n",
-              n_ovf, n_lane_hi, n_rocket_in[0], n_rocket_region[0], n_rocket_in[1],
-              n_rocket_region[1], n_rocket_in[2], n_rocket_region[2], n_d2_neg);
-  for (int t = 0; t < 5; ++t)
-    if (n_in[t] < count / 200 || n_type[t] - n_in[t] < count / 200)
-      return tb.fail("the vectors are too weak: %s has %ld of %ld points inside", kTypeName[t],
-                     n_in[t], n_type[t]);
-  if (n_ovf == 0 || n_lane_hi < count / 200 || n_d2_neg == 0 ||
-      *std::min_element(n_rocket_in, n_rocket_in + 3) == 0)
-    return tb.fail("the vectors are too weak (overflow, upper turns, rocket regions or relief "
-                   "s²m² ≤ 0 missing)");
+  std::printf("tb_rpu_indicator: %zu points; overflow %ld, a turn above the first holding the "
+              "point %ld, relief s²m² ≤ 0 %ld\n", items.size(), n_ovf, n_lane_hi, n_d2_neg);
+  by_src.print("per source");
+  by_type.print("per surface type");
+  rocket.print("per rocket region");
+  if (tb.weak(by_type.too_weak({1, 2}, count / 200)) || tb.weak(rocket.too_weak({1}, 1))) return 1;
+  if (n_ovf == 0 || n_lane_hi < count / 200 || n_d2_neg == 0)
+    return tb.fail("the vectors are too weak (overflow, upper turns or relief s²m² ≤ 0 missing)");
 
-  sim::Stream<Vrpu_indicator, Item> s;
+  sim::Stream<Vrpu_indicator, Item> s{.latency = kLatency};
   s.inputs = [&](sim::Inputs& in, Vrpu_indicator& t, const Item& it) {
     in.vec("l", t.l_i, it.l, kLw)("x_negative", t.x_negative_i, it.x_negative, 1);
     in("last_turn", t.last_turn_i, it.last_turn, 1);
@@ -524,7 +476,5 @@ int main(int argc, char** argv) {
     return surfs[static_cast<size_t>(it.surf)].name + " (" + kTypeName[static_cast<int>(it.desc.type)] +
            "), " + kSourceName[it.source] + " point";
   };
-  s.latency = kLatency;
-  s.tag_w = TAG_W;
   return tb.check(items, s);
 }

@@ -30,7 +30,7 @@ const ref::HwParams kP = sim::tb_params();
 const int LW = kP.surf_w;
 constexpr int kCtxW = CTX_W, kTurns = TURNS;
 const char* const* const kTypeName = sim::kSurfaceTypeName;
-enum Kind { kScene, kEdited, kRandomPiece, kKinds };
+enum Kind { kScene, kEdited, kRandomPiece };
 const char* const kKindName[] = {"scene piece", "edited descriptor", "random piece"};
 
 struct Item {
@@ -125,30 +125,21 @@ int main(int argc, char** argv) {
   }
   std::shuffle(items.begin(), items.end(), rng);  // mix the surfaces and kinds
 
-  long n_run = 0, n_hit = 0, n_ovf = 0, n_kind[kKinds] = {}, n_type_hit[5] = {},
-       n_type_miss[5] = {};
+  sim::Tally by_kind(kKindName, {"items", "run", "hits", "with overflow"});
+  sim::Tally by_type(sim::kSurfaceTypeName, {"hits", "misses"});  // of the pieces run
   for (const Item& it : items) {
-    const int t = static_cast<int>(it.d->type);
-    ++n_kind[it.kind];
-    n_run += it.su.valid;
-    n_hit += it.hit;
-    n_ovf += it.ovf;
-    if (it.su.valid) ++(it.hit ? n_type_hit[t] : n_type_miss[t]);
+    by_kind.add(it.kind, 1, it.su.valid, it.hit, it.ovf);
+    by_type.add(static_cast<int>(it.d->type), it.su.valid && it.hit, it.su.valid && !it.hit);
   }
-  std::printf("tb_rpu_surface_ip: %zu items (%ld scene pieces, %ld edited, %ld random): %ld run, "
-              "%ld hits, %ld overflow\n  hit/missed per type:",
-              items.size(), n_kind[kScene], n_kind[kEdited], n_kind[kRandomPiece], n_run, n_hit,
-              n_ovf);
-  for (int t = 0; t < 5; ++t) std::printf(" %s %ld/%ld,", kTypeName[t], n_type_hit[t], n_type_miss[t]);
-  std::printf("\n");
-  for (int t = 0; t < 5; ++t)
-    if (n_type_hit[t] < 10 || n_type_miss[t] < 10)
-      return tb.fail("the vectors are too weak: %s has %ld hits and %ld misses", kTypeName[t],
-                     n_type_hit[t], n_type_miss[t]);
+  const long n_run = by_kind.total(1), n_ovf = by_kind.total(3);
+  std::printf("tb_rpu_surface_ip: %zu items, %ld run, %ld overflow\n", items.size(), n_run, n_ovf);
+  by_kind.print("per kind");
+  by_type.print("pieces run per surface type");
+  if (tb.weak(by_type.too_weak({0, 1}, 10))) return 1;
   if (n_ovf < 10 || n_run == static_cast<long>(items.size()))
     return tb.fail("the vectors are too weak (under 10 overflows, or no empty piece)");
 
-  sim::Stream<Vrpu_surface_ip, Item> s;
+  sim::Stream<Vrpu_surface_ip, Item> s{.latency = latency};
   s.inputs = [](sim::Inputs& in, Vrpu_surface_ip& t, const Item& it) {
     in("run", t.run_i, it.su.valid, 1).fields("lA'", t.la_i, std::array{it.su.lA.x, it.su.lA.y, it.su.lA.z}, LW);
     in.fields("lB' - lA'", t.lab_i, std::array{it.su.lAB.x, it.su.lAB.y, it.su.lAB.z}, LW + 1);
@@ -166,7 +157,6 @@ int main(int argc, char** argv) {
            (it.kind == kRandomPiece ? "no" : sim::kRaySourceName[it.ray.src]) + " ray, piece " +
            std::to_string(it.piece);
   };
-  s.latency = latency;
   s.timeout = 20 * static_cast<long>(items.size()) * (kP.K() + 2) + 4 * latency;
   return tb.check(items, s);
 }

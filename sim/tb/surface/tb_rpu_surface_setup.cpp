@@ -47,13 +47,6 @@ const char* const kSourceName[kSources] = {"camera pixel", "through sphere", "ey
                                            "grazing", "range plane", "end-angle variant",
                                            "saturating frame"};
 
-struct Surf {
-  std::string name;                   // scene file and surface index
-  const scene::CompiledSurface* cs;   // frame and bounding sphere (world, local)
-  ref::Normalization norm;
-  ref::SurfaceDesc d;
-};
-
 struct Expected {
   ref::SurfaceSetupOut o;
   bool ovf = false;
@@ -81,8 +74,8 @@ using sim::fits_signed3;
 bool fits_ports(const Item& it) {
   const ref::SurfaceDesc& s = *it.s;
   bool ok = fits_signed3(it.eye, CW) && fits_signed3(it.vhat, DirW) &&
-            fits_signed3(s.bound.c0, CW) && fits_signed3(s.origin, CW) && s.bound.R2 >= 0 &&
-            fixed::fits_unsigned(static_cast<u128>(s.bound.R2), R2W) && s.to_local_s >= 0 &&
+            fits_signed3(s.bound.c0, CW) && fits_signed3(s.origin, CW) &&
+            sim::fits_unsigned(s.bound.R2, R2W) && s.to_local_s >= 0 &&
             s.to_local_s < (1 << kShW) && fixed::fits_signed(s.y_min, LW) &&
             fixed::fits_signed(s.y_max, LW) && s.end_angle < (std::uint64_t{1} << AW) &&
             fixed::fits_signed(s.end_cos, ConstW) && fixed::fits_signed(s.end_sin, ConstW) &&
@@ -114,29 +107,13 @@ int main(int argc, char** argv) {
 
   std::deque<scene::CompiledScene> scenes;
   std::deque<ref::SurfaceDesc> variants;
-  std::vector<Surf> surfs;
-  std::vector<ref::CameraDesc> cams;  // per surface: its scene's camera
   // Each scene twice: as written, and with every surface turned by (23°, 37°, 61°) more about
   // x, y, z, so every entry of the local-frame matrix is nonzero (the scenes' own placements
   // leave some at zero, e.g. M[1][0] after a 90° turn about x, and their products untested).
-  for (int turned = 0; turned < 2; ++turned) {
-    for (const char* name : sim::kSurfaceScenes) {
-      scene::Scene sc = sim::demo_scene(name);
-      if (turned)
-        for (scene::Surface& s : sc.surfaces)
-          s.rotation_deg = {s.rotation_deg.x + 23.0, s.rotation_deg.y + 37.0,
-                            s.rotation_deg.z + 61.0};
-      scenes.push_back(scene::compile_scene(sc));
-      const ref::ModelScene m = ref::quantize_scene(scenes.back(), kP);
-      for (size_t k = 0; k < m.surfaces.size(); ++k) {
-        surfs.push_back({std::string(name) + (turned ? "/turned[" : "[") + std::to_string(k) + "]",
-                         &scenes.back().surfaces[k], m.norm, m.surfaces[k]});
-        cams.push_back(m.camera);
-      }
-    }
-  }
+  std::vector<sim::SurfCase> surfs = sim::load_surface_cases(kP, scenes);
+  for (const sim::SurfCase& s : sim::load_surface_cases(kP, scenes, true)) surfs.push_back(s);
   std::printf("%zu surfaces:", surfs.size());
-  for (const Surf& s : surfs)
+  for (const sim::SurfCase& s : surfs)
     std::printf(" %s (%s, to_local_s %d, end angle %llu)", s.name.c_str(),
                 scene::surface_type_name(s.d.type), s.d.to_local_s,
                 static_cast<unsigned long long>(s.d.end_angle));
@@ -154,9 +131,9 @@ int main(int argc, char** argv) {
   };
 
   for (int si = 0; si < static_cast<int>(surfs.size()); ++si) {
-    const Surf& S = surfs[static_cast<size_t>(si)];
+    const sim::SurfCase& S = surfs[static_cast<size_t>(si)];
     const ref::SurfaceDesc* d = &S.d;
-    const ref::CameraDesc& cam = cams[static_cast<size_t>(si)];
+    const ref::CameraDesc& cam = S.cam;
     std::uniform_real_distribution<double> u01(0.0, 1.0);
 
     // ---- camera pixels: 1500 rays meeting the sphere, 400 missing it ----
@@ -324,8 +301,7 @@ int main(int argc, char** argv) {
   }
 
   // ---- statistics of what is driven ----
-  long per_src[kSources] = {}, per_src_pred[kSources] = {}, per_src_valid[kSources] = {};
-  long per_src_ovf[kSources] = {};
+  sim::Tally by_src(kSourceName, {"items", "with pred1", "valid pieces", "with overflow"});
   long pieces_hist[4] = {}, xneg[2] = {}, last[2] = {}, slab_full = 0, slab_dy0 = 0;
   long cut_at_end = 0, cut_at_start = 0, slab_lo0 = 0, slab_hi1 = 0, slab_inner = 0;
   for (Item& it : items) {
@@ -334,10 +310,7 @@ int main(int argc, char** argv) {
                      kSourceName[it.src], surfs[static_cast<size_t>(it.surf)].name.c_str(),
                      sim::str(it.eye).c_str(), sim::str(it.vhat).c_str());
     const Expected e = it.want = expected(it);
-    ++per_src[it.src];
-    per_src_pred[it.src] += e.o.sphere.pred1;
-    per_src_valid[it.src] += e.o.valid;
-    per_src_ovf[it.src] += e.ovf;
+    by_src.add(it.src, 1, e.o.sphere.pred1, e.o.valid, e.ovf);
     if (it.piece == 0) ++pieces_hist[e.o.pieces];
     if (e.o.valid) {
       const bool az = it.s->type == SurfaceType::kSpiral || it.s->type == SurfaceType::kSnail;
@@ -355,9 +328,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  for (int k = 0; k < kSources; ++k)
-    std::printf("  %-18s %7ld items, %7ld with pred1, %7ld valid pieces, %5ld with overflow\n",
-                kSourceName[k], per_src[k], per_src_pred[k], per_src_valid[k], per_src_ovf[k]);
+  by_src.print("per source");
   std::printf("  rays with 0/1/2/3 pieces: %ld / %ld / %ld / %ld; azimuth pieces x_negative 0/1: "
               "%ld / %ld, last_turn 0/1: %ld / %ld; azimuth rays with the x = 0 cut at s = 0: %ld, "
               "at s = 1: %ld\n  slab pieces: [0, 1] %ld, from 0 %ld, to 1 %ld, "
@@ -368,7 +339,7 @@ int main(int argc, char** argv) {
 
   std::shuffle(items.begin(), items.end(), rng);  // mix the sources and surfaces
 
-  sim::Stream<Vrpu_surface_setup, Item> st;
+  sim::Stream<Vrpu_surface_setup, Item> st{.latency = ref::surface_setup_latency(kP)};
   st.inputs = [](sim::Inputs& in, Vrpu_surface_setup& t, const Item& it) {
     const ref::SurfaceDesc& s = *it.s;
     in.vec("eye", t.eye_i, it.eye, CW).vec("vhat", t.vhat_i, it.vhat, DirW).vec("c0", t.c0_i, s.bound.c0, CW);
@@ -393,8 +364,6 @@ int main(int argc, char** argv) {
     return std::string(kSourceName[it.src]) + ", surface " + surfs[static_cast<size_t>(it.surf)].name +
            ", " + std::to_string(it.i) + "/" + std::to_string(it.j) + ", piece " + std::to_string(it.piece);
   };
-  st.latency = ref::surface_setup_latency(kP);
-  st.tag_w = TAG_W;
   if (!tb.run(items, st)) return 1;
   long valid_pieces = 0;
   for (const Item& it : items) valid_pieces += it.want.o.valid;

@@ -112,39 +112,30 @@ int main(int argc, char** argv) {
   }
 
   // ---- what the items exercise ----
-  long n_items = 0, n_valid = 0, n_hit = 0, n_ovf = 0, n_type_hit[5] = {}, n_type_miss[5] = {},
-       n_src[sim::kRaySources] = {}, n_src_hit[sim::kRaySources] = {}, n_pieces[4] = {};
+  sim::Tally by_src(sim::kRaySourceName, {"items", "valid pieces", "hits", "with overflow"});
+  sim::Tally by_type(sim::kSurfaceTypeName, {"hits", "missed pieces"});  // of the valid pieces
+  long n_pieces[4] = {};
   for (const Batch& b : batches)
     for (const Item& it : b.items) {
-      const int t = static_cast<int>(it.d->type);
-      ++n_items;
-      n_valid += it.want.valid;
-      n_hit += it.want.hit;
-      n_ovf += it.want.overflow;
-      ++n_src[it.ray.src];
-      n_src_hit[it.ray.src] += it.want.hit;
-      ++n_pieces[std::clamp(it.want.pieces, 0, 3)];
-      if (it.want.valid) ++(it.want.hit ? n_type_hit[t] : n_type_miss[t]);
+      const ref::SurfacePieceResult& w = it.want;
+      by_src.add(it.ray.src, 1, w.valid, w.hit, w.overflow);
+      by_type.add(static_cast<int>(it.d->type), w.valid && w.hit, w.valid && !w.hit);
+      ++n_pieces[std::clamp(w.pieces, 0, 3)];
     }
-  std::printf("tb_rpu_surface_top: %zu surfaces, %zu batches, %ld items: %ld pieces valid, %ld hits, "
-              "%ld overflow; pairs with 0/1/2/3 pieces %ld/%ld/%ld/%ld\n  hits/items per source:",
-              cases.size(), batches.size(), n_items, n_valid, n_hit, n_ovf, n_pieces[0],
+  const long n_items = by_src.total(0), n_valid = by_src.total(1), n_ovf = by_src.total(3);
+  std::printf("tb_rpu_surface_top: %zu surfaces, %zu batches, %ld items: %ld pieces valid, %ld "
+              "hits, %ld overflow; pairs with 0/1/2/3 pieces %ld/%ld/%ld/%ld\n",
+              cases.size(), batches.size(), n_items, n_valid, by_src.total(2), n_ovf, n_pieces[0],
               n_pieces[1], n_pieces[2], n_pieces[3]);
-  for (int k = 0; k < sim::kRaySources; ++k)
-    std::printf(" %s %ld/%ld,", sim::kRaySourceName[k], n_src_hit[k], n_src[k]);
-  std::printf("\n  hit/missed valid pieces per type:");
-  for (int t = 0; t < 5; ++t) std::printf(" %s %ld/%ld,", kTypeName[t], n_type_hit[t], n_type_miss[t]);
-  std::printf("\n");
-  for (int t = 0; t < 5; ++t)
-    if (n_type_hit[t] < 10 || n_type_miss[t] < 10)
-      return tb.fail("the vectors are too weak: %s has %ld hits and %ld missed pieces",
-                     kTypeName[t], n_type_hit[t], n_type_miss[t]);
+  by_src.print("per ray source");
+  by_type.print("valid pieces per surface type");
+  if (tb.weak(by_type.too_weak({0, 1}, 10))) return 1;
   if (n_pieces[2] == 0 || n_pieces[3] == 0 || n_valid == n_items || n_ovf < 10)
     return tb.fail("the vectors are too weak (no pair of 2 or 3 pieces, no invalid piece or under "
                    "10 overflows)");
 
   // ---- run: one batch after the other, each drained before the next changes eye and W ----
-  sim::Stream<Vrpu_surface_top, Item> s;
+  sim::Stream<Vrpu_surface_top, Item> s{.latency = latency};
   s.inputs = [](sim::Inputs& in, Vrpu_surface_top& t, const Item& it) {
     const ref::SurfaceDesc& d = *it.d;
     in.vec("vhat", t.vhat_i, it.ray.vhat, DirW).vec("bound_c0", t.bound_c0_i, d.bound.c0, CW);
@@ -174,8 +165,6 @@ int main(int argc, char** argv) {
            ", " + std::to_string(it.ray.j) + "), piece " + std::to_string(it.piece) + ", eye " +
            sim::str(batch->cam.eye) + " W " + sim::str(batch->cam.w);
   };
-  s.latency = latency;
-  s.tag_w = TAG_W;
   tb.reset();
   for (const Batch& b : batches) {
     batch = &b;

@@ -38,19 +38,42 @@ struct SurfCase {
   ref::CameraDesc cam;
 };
 
-// The demo scenes with surfaces; every surface of them at `p` (load_surface_cases); the
-// compiled scenes live in `keep` (a deque: stable addresses).
+// The demo scenes with surfaces; every surface of them at `p` (load_surface_cases), `turned`:
+// by (23°, 37°, 61°) more about x, y, z (named <scene>/turned[k]); the compiled scenes live in
+// `keep` (a deque: stable addresses).
 inline std::vector<SurfCase> load_surface_cases(const ref::HwParams& p,
-                                                std::deque<scene::CompiledScene>& keep) {
+                                                std::deque<scene::CompiledScene>& keep,
+                                                bool turned = false) {
   std::vector<SurfCase> out;
   for (const char* name : kSurfaceScenes) {
-    keep.push_back(compiled_demo_scene(name));
+    scene::Scene sc = demo_scene(name);
+    for (scene::Surface& s : sc.surfaces)
+      if (turned) s.rotation_deg = s.rotation_deg + Vec3{23.0, 37.0, 61.0};
+    keep.push_back(scene::compile_scene(sc));
     const ref::ModelScene m = ref::quantize_scene(keep.back(), p);
     for (size_t k = 0; k < m.surfaces.size(); ++k)
-      out.push_back({std::string(name) + "[" + std::to_string(k) + "]", &keep.back(),
-                     &keep.back().surfaces[k], m.norm, m.surfaces[k], m.camera});
+      out.push_back({std::string(name) + (turned ? "/turned[" : "[") + std::to_string(k) + "]",
+                     &keep.back(), &keep.back().surfaces[k], m.norm, m.surfaces[k], m.camera});
   }
   return out;
+}
+
+// A point R(φ, v) of the surface's seed (SurfaceGeometry::point), local units, at random
+// parameters over their whole ranges.
+inline Vec3 random_seed_point(const scene::Surface& s, std::mt19937_64& rng) {
+  const scene::SurfaceParams& q = s.p;
+  double phi = uniform(rng, 0, 2 * std::numbers::pi), v = 0;
+  switch (s.type) {
+    case scene::SurfaceType::kEllipsoid:
+    case scene::SurfaceType::kReliefEllipsoid: v = uniform(rng, q.y_min, q.y_max); break;
+    case scene::SurfaceType::kSpiral:
+    case scene::SurfaceType::kSnail:
+      phi = uniform(rng, 0, q.phi_max);
+      v = uniform(rng, 0, 2 * std::numbers::pi);
+      break;
+    case scene::SurfaceType::kRocket: v = uniform(rng, -q.c, q.b + q.e); break;
+  }
+  return scene::SurfaceGeometry(s).point(phi, v);
 }
 
 enum RaySource { kPixelNear, kPixelAny, kBorder, kGrazing, kPlane, kInsideEye, kRaySources };
@@ -76,7 +99,6 @@ inline void camera_rays(const ref::HwParams& p, const SurfCase& S, int surf, int
   const ref::CameraDesc& cam = S.cam;
   const scene::CompiledSurface& cs = *S.cs;
   const scene::SurfaceGeometry geom(cs.surface);
-  const scene::SurfaceParams& q = cs.surface.p;
   const double llsb = std::ldexp(1.0, -S.d.local_frac);
   const Vec3 c0 = to_vec(S.d.bound.c0);
   const double R = std::sqrt(static_cast<double>(S.d.bound.R2));
@@ -90,20 +112,9 @@ inline void camera_rays(const ref::HwParams& p, const SurfCase& S, int surf, int
   for (int n = 0; n < count; ++n) {
     const int kind = static_cast<int>(rng() % 100);
     if (kind < 45) {
-      double phi = u01(rng) * 2 * std::numbers::pi, v = 0;
-      switch (cs.surface.type) {
-        case scene::SurfaceType::kEllipsoid:
-        case scene::SurfaceType::kReliefEllipsoid: v = q.y_min + (q.y_max - q.y_min) * u01(rng); break;
-        case scene::SurfaceType::kSpiral:
-        case scene::SurfaceType::kSnail:
-          phi = u01(rng) * q.phi_max;
-          v = u01(rng) * 2 * std::numbers::pi;
-          break;
-        case scene::SurfaceType::kRocket: v = -q.c + (q.b + q.e + q.c) * u01(rng); break;
-      }
       int i, j;
-      if (!scene::project_to_pixel(S.scene->camera, cs.local_to_world(geom.point(phi, v)), i, j))
-        continue;
+      const Vec3 l = random_seed_point(cs.surface, rng);
+      if (!scene::project_to_pixel(S.scene->camera, cs.local_to_world(l), i, j)) continue;
       i = std::clamp(i + static_cast<int>(rng() % 5) - 2, 0, cam.width - 1);
       j = std::clamp(j + static_cast<int>(rng() % 5) - 2, 0, cam.height - 1);
       pixel(kPixelNear, i, j);

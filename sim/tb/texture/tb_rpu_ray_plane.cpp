@@ -11,7 +11,6 @@
 //   - random port values (eye, v̂, W over their whole formats, v̂_z biased small: every rejection
 //     path and the extreme widths; h_z at and around the quotient limit for the given v̂_z).
 // p0_valid, p0 (x, y, z), depth, the tag and the latency compared for every ray.
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -42,16 +41,7 @@ int main(int argc, char** argv) {
 
   std::vector<Camera> cams;
   const auto add_camera = [&](const std::string& name, scene::Scene s) {
-    // Narrow direction formats: the compiler refuses a view whose pixel spans fewer than
-    // ref::Precision::kRefuse direction LSBs, so the frames shrink to 32 pixels on their longer
-    // side (as in tb_rpu_ray_gen), an odd height staying odd (the centre row's v̂_z = 0).
-    if (kFv < 16) {
-      scene::Camera& c = s.camera;
-      const int side = std::max(c.width, c.height), odd = c.height % 2;
-      c.width = std::max(1, c.width * 32 / side);
-      c.height = std::max(1, c.height * 32 / side);
-      if (odd && c.height % 2 == 0) ++c.height;
-    }
+    sim::shrink_for_dir_frac(s.camera, kFv, true);  // odd heights: the centre row's v̂_z = 0
     cams.push_back({name, ref::quantize_scene(scene::compile_scene(s), p).camera});
     return static_cast<int>(cams.size()) - 1;
   };
@@ -173,7 +163,7 @@ int main(int argc, char** argv) {
     items.push_back(it);
   }
 
-  sim::Stream<Vrpu_ray_plane, Item> s;
+  sim::Stream<Vrpu_ray_plane, Item> s{.latency = ref::ray_plane_latency(p)};
   s.inputs = [](sim::Inputs& in, Vrpu_ray_plane& t, const Item& it) {
     in.vec("eye", t.eye_i, it.eye, kCw).vec("vhat", t.vhat_i, it.vhat, kDirW).vec("W", t.w_i, it.w, kEdgeW);
   };
@@ -185,8 +175,6 @@ int main(int argc, char** argv) {
     return (it.camera < 0 ? std::string("random port vector") : cams[static_cast<size_t>(it.camera)].name) +
            ", pixel (" + std::to_string(it.i) + ", " + std::to_string(it.j) + ")";
   };
-  s.latency = ref::ray_plane_latency(p);
-  s.tag_w = TAG_W;
   return tb.check(items, s,
                   "CoordW=%d DirFrac=%d EdgeFrac=%d latency %ld; %ld ellipse6 all pixels, %ld "
                   "airfield random, %ld constructed cameras, %ld random port vectors; %ld valid, "

@@ -41,6 +41,7 @@ struct Scene {
   scene::ClassificationGrid grid;
 };
 
+const char* const kScenes[] = {"ellipse6", "polyline9", "airfield"};
 enum Source { kGrid, kNeighbour, kRandomSeg, kRandomP0, kRandomZ, kPortEdge, kExact };
 const char* const kSourceName[] = {"grid",      "grid neighbour",   "random segment",
                                    "random p0", "random p0 with z", "descriptor edge",
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
   const ref::HwParams p = sim::tb_params();
 
   std::vector<Scene> scenes;
-  for (const char* name : {"ellipse6", "polyline9", "airfield"}) {
+  for (const char* name : kScenes) {
     Scene s;
     s.name = name;
     s.sc = sim::compiled_demo_scene(name);
@@ -79,15 +80,12 @@ int main(int argc, char** argv) {
 
   const long count = tb.vectors(100000);
   std::vector<Item> items;
-  long per_source[7] = {}, per_scene[3] = {};
   const auto add_desc = [&](int k, size_t seg, const ref::SegmentDesc& s, int i, int j,
                             Source src, const ref::WVec3& p0) {
     fixed::Overflow ovf;
     Item it{k, seg, s, i, j, src, p0, ref::texture_unit(p, s, p0, ovf), false};
     it.ovf = ovf.flag;
     items.push_back(it);
-    ++per_source[src];
-    ++per_scene[k];
   };
   const auto add = [&](int k, size_t seg, int i, int j, Source src, const ref::WVec3& p0) {
     add_desc(k, seg, scenes[static_cast<size_t>(k)].m.texture_segments[seg], i, j, src, p0);
@@ -109,7 +107,7 @@ int main(int argc, char** argv) {
       // (t̂ saturates), w0_2 at 0 and at its maximum.
       const size_t seg = rng() % nseg;
       ref::SegmentDesc s = S.m.texture_segments[seg];
-      const double u = std::uniform_real_distribution<double>(-0.05, 1.05)(rng);
+      const double u = sim::uniform(rng, -0.05, 1.05);
       const i128 reach = 2 * static_cast<i128>(std::sqrt(static_cast<double>(s.w0_2))) + 2;
       const auto near = [&](fixed::i64 p1, fixed::i64 d) {
         return static_cast<i128>(p1) + static_cast<i128>(std::floor(static_cast<double>(d) * u)) +
@@ -122,7 +120,7 @@ int main(int argc, char** argv) {
           // kFlatRatio·L (a = L²/2h, b = L²/4h² in Q(0.FT)): h from the threshold to 2^6 times it.
           ref::GuideDesc& g = s.guide[rng() % 2];
           const double L = std::sqrt(static_cast<double>(s.L2));
-          const double x = std::uniform_real_distribution<double>(0, 1)(rng);
+          const double x = sim::uniform(rng, 0, 1);
           const double h = L * ref::HwParams::kFlatRatio *
                            (1.0 + 1e-6 + std::ldexp(x, static_cast<int>(rng() % 7)));
           sim::set_flat_guide(g, s.L2, h, kFt);
@@ -204,12 +202,12 @@ int main(int argc, char** argv) {
     if (kind < 80) {
       // A point within about two half widths of a texture curve, its pixel or a neighbour.
       const scene::CompiledSegment& cs = S.sc.texture_segments[rng() % nseg];
-      const double u = std::uniform_real_distribution<double>(0, 1)(rng);
+      const double u = sim::uniform(rng, 0, 1);
       const Vec3 c = scene::curve_point(cs.geom, u);
       const Vec3 tan = scene::curve_point(cs.geom, std::min(1.0, u + 1e-3)) -
                        scene::curve_point(cs.geom, std::max(0.0, u - 1e-3));
       const Vec3 n = normalize(Vec3{-tan.y, tan.x, 0.0});
-      const double off = std::uniform_real_distribution<double>(-2.2, 2.2)(rng) * cs.half_width;
+      const double off = sim::uniform(rng, -2.2, 2.2) * cs.half_width;
       int ci, cj;
       if (!scene::project_to_pixel(S.sc.camera, c + n * off, ci, cj)) continue;
       i = std::clamp(ci + static_cast<int>(rng() % 3) - 1, 0, cam.width - 1);
@@ -229,18 +227,17 @@ int main(int argc, char** argv) {
   }
 
   // What the vectors exercise.
-  long n_covers = 0, n_pr1 = 0, n_pr2 = 0, n_pr3 = 0, n_pr1_not3 = 0, n_edge_out = 0,
-       n_edge_in = 0, n_ovf = 0, n_clamp_lo = 0, n_clamp_hi = 0, n_plane_eq = 0, n_w0_eq = 0;
+  sim::Tally by_src(kSourceName, {"pairs", "covers", "pr1", "pr2", "pr3", "pr1 ∧ ¬pr3"});
+  sim::Tally by_scene(kScenes, {"pairs"});
+  long n_edge_out = 0, n_edge_in = 0, n_ovf = 0, n_clamp_lo = 0, n_clamp_hi = 0, n_plane_eq = 0,
+       n_w0_eq = 0;
   for (const Item& it : items) {
     const ref::TextureOut& w = it.want;
     const ref::SegmentDesc& s = it.desc;
     const ref::WVec3 e{w.X.x - it.p0.x, w.X.y - it.p0.y, w.X.z - it.p0.z};
     const i128 e2 = e.x * e.x + e.y * e.y + e.z * e.z;
-    n_covers += w.covers;
-    n_pr1 += w.pr1;
-    n_pr2 += w.pr2;
-    n_pr3 += w.pr3;
-    n_pr1_not3 += w.pr1 && !w.pr3;
+    by_src.add(it.source, 1, w.covers, w.pr1, w.pr2, w.pr3, w.pr1 && !w.pr3);
+    by_scene.add(it.scene, 1);
     n_edge_out += w.pr1 && !w.pr3 && e2 <= 4 * s.w0_2;  // just outside the stroke
     n_edge_in += w.pr1 && w.pr3 && 4 * e2 >= s.w0_2;     // just inside it
     n_ovf += it.ovf;
@@ -253,6 +250,7 @@ int main(int argc, char** argv) {
     n_w0_eq += r1.x * r1.x + r1.y * r1.y + r1.z * r1.z == s.w0_2 ||
                r2.x * r2.x + r2.y * r2.y + r2.z * r2.z == s.w0_2 || e2 == s.w0_2;
   }
+  const long n_covers = by_src.total(1);
   if (n_covers < count / 20 || n_edge_out < count / 50 || n_clamp_lo == 0 || n_clamp_hi == 0 ||
       n_ovf == 0 || n_plane_eq == 0 || n_w0_eq == 0) {
     return tb.fail("the vectors are too weak: %ld covers, %ld pr1 ∧ ¬pr3 near the edge, %ld / "
@@ -261,7 +259,7 @@ int main(int argc, char** argv) {
                    items.size());
   }
 
-  sim::Stream<Vrpu_texture, Item> s;
+  sim::Stream<Vrpu_texture, Item> s{.latency = ref::texture_latency(p)};
   s.inputs = [](sim::Inputs& in, Vrpu_texture& t, const Item& it) {
     const ref::SegmentDesc& d = it.desc;
     in.vec("p0", t.p0_i, it.p0, kCw).vec("p1", t.p1_i, d.p1, kCw).vec("d", t.d_i, d.d, kDw);
@@ -281,20 +279,13 @@ int main(int argc, char** argv) {
     return scenes[static_cast<size_t>(it.scene)].name + " segment " + std::to_string(it.seg) + " (" +
            kSourceName[it.source] + "), pixel (" + std::to_string(it.i) + ", " + std::to_string(it.j) + ")";
   };
-  s.latency = ref::texture_latency(p);
-  s.tag_w = TAG_W;
   if (!tb.run(items, s)) return 1;
-  std::printf("  scenes: %ld ellipse6, %ld polyline9, %ld airfield; segments: %ld grid, %ld grid "
-              "neighbour, %ld random; %ld random p0 (%ld with z), %ld descriptor edges, %ld exact "
-              "boundaries\n"
-              "  covers %ld, pr1 %ld, pr2 %ld, pr3 %ld, pr1 ∧ ¬pr3 %ld (%ld within 2·w0 of X), pr3 "
-              "with |X − p0| ≥ w0/2 %ld, (p0 − p1)·d clamped low %ld / high %ld, ovf %ld\n"
-              "  equal: (p0 − p1)·d ∈ {0, L2} %ld, w0_2 ∈ {|r1|², |r2|², |X − p0|²} %ld\n",
-              per_scene[0], per_scene[1], per_scene[2], per_source[kGrid], per_source[kNeighbour],
-              per_source[kRandomSeg], per_source[kRandomP0] + per_source[kRandomZ],
-              per_source[kRandomZ], per_source[kPortEdge], per_source[kExact], n_covers, n_pr1,
-              n_pr2, n_pr3, n_pr1_not3, n_edge_out, n_edge_in, n_clamp_lo, n_clamp_hi, n_ovf,
-              n_plane_eq, n_w0_eq);
+  by_scene.print("per scene");
+  by_src.print("per source of (p0, segment)");
+  std::printf("  pr1 ∧ ¬pr3 within 2·w0 of X %ld, pr3 with |X − p0| ≥ w0/2 %ld, (p0 − p1)·d "
+              "clamped low %ld / high %ld, ovf %ld\n  equal: (p0 − p1)·d ∈ {0, L2} %ld, w0_2 ∈ "
+              "{|r1|², |r2|², |X − p0|²} %ld\n", n_edge_out, n_edge_in, n_clamp_lo, n_clamp_hi,
+              n_ovf, n_plane_eq, n_w0_eq);
   return tb.pass("CoordW=%d TFrac=%d UnitFrac=%d InvW=%d SqrtW=%d latency %ld", kCw, kFt, UNIT_FRAC,
                  kInvW, SQRT_W, s.latency);
 }

@@ -83,14 +83,7 @@ int main(int argc, char** argv) {
   std::vector<Scene> scenes;
   for (const char* name : {"curve12", "airfield"}) {
     scene::Scene sc = sim::demo_scene(name);
-    // Narrow direction formats: the compiler refuses a view whose pixel spans fewer than
-    // ref::Precision::kRefuse direction LSBs (curve12 at 256 pixels spans 13 at FV = 12), so the
-    // frames shrink to 32 pixels on their longer side (104 and 186 LSBs per pixel).
-    if (kFv < 16) {
-      const int side = std::max(sc.camera.width, sc.camera.height);
-      sc.camera.width = std::max(1, sc.camera.width * 32 / side);
-      sc.camera.height = std::max(1, sc.camera.height * 32 / side);
-    }
+    sim::shrink_for_dir_frac(sc.camera, kFv, false);  // 104 and 186 LSBs per pixel at FV = 12
     scenes.push_back({name, ref::quantize_scene(scene::compile_scene(sc), params)});
   }
   const Scene& curve = scenes[0];
@@ -167,7 +160,7 @@ int main(int argc, char** argv) {
   for (Pixel& px : pixels)
     px.want = ref::ray_generator(scenes[0].model.params, cams[static_cast<size_t>(px.cam)], px.i, px.j);
 
-  sim::Stream<Vrpu_ray_gen, Pixel> s;
+  sim::Stream<Vrpu_ray_gen, Pixel> s{.latency = ref::ray_gen_latency(params, kIdxW)};
   s.inputs = [&](sim::Inputs& in, Vrpu_ray_gen& t, const Pixel& px) {
     const ref::CameraDesc& c = cams[static_cast<size_t>(px.cam)];
     in("i", t.i_i, px.i, kIdxW)("j", t.j_i, px.j, kIdxW);
@@ -184,8 +177,6 @@ int main(int argc, char** argv) {
     return cam_names[static_cast<size_t>(px.cam)] + " pixel (" + std::to_string(px.i) + ", " +
            std::to_string(px.j) + ")";
   };
-  s.latency = ref::ray_gen_latency(params, kIdxW);
-  s.tag_w = TAG_W;
   return tb.check(pixels, s,
                   "DirFrac=%d EdgeFrac=%d IdxW=%d latency %ld; 8 corners, %ld curve12 all pixels, "
                   "%ld airfield random, %ld mixed random, %ld synthetic cameras, %ld with v.v = "

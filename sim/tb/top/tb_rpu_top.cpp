@@ -106,23 +106,17 @@ int main(int argc, char** argv) {
                 sb.item_mismatches(), sb.pixel_mismatches(), sb.results(), f.items.size());
     return 1;
   }
+  const auto ull = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
   std::printf("rpu_top %s (%s), %s %dx%d: matched %llu items (%llu curve, %llu texture, %llu "
               "hits) and %llu pixels in %llu cycles, latency %llu cycles, %.3f items/cycle, "
               "%llu input stall cycles\n",
-              mode.c_str(), cfg->name.c_str(), scene_name.c_str(), size, size,
-              static_cast<unsigned long long>(st.items),
-              static_cast<unsigned long long>(st.curve_items),
-              static_cast<unsigned long long>(st.texture_items),
-              static_cast<unsigned long long>(st.hits), static_cast<unsigned long long>(st.pixels),
-              static_cast<unsigned long long>(st.cycles),
-              static_cast<unsigned long long>(st.latency_cycles), st.items_per_cycle(),
-              static_cast<unsigned long long>(st.stall_cycles));
+              mode.c_str(), cfg->name.c_str(), scene_name.c_str(), size, size, ull(st.items),
+              ull(st.curve_items), ull(st.texture_items), ull(st.hits), ull(st.pixels),
+              ull(st.cycles), ull(st.latency_cycles), st.items_per_cycle(), ull(st.stall_cycles));
   if (mode == "throughput" && cfg->params.unrolled &&
       st.cycles > st.items + st.latency_cycles + 8) {
     std::printf("FAILURE: %llu cycles for %llu items exceeds items + latency (%llu) + 8\n",
-                static_cast<unsigned long long>(st.cycles),
-                static_cast<unsigned long long>(st.items),
-                static_cast<unsigned long long>(st.latency_cycles));
+                ull(st.cycles), ull(st.items), ull(st.latency_cycles));
     return 1;
   }
   return 0;
