@@ -11,6 +11,25 @@ set(RPU_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
 set(RPU_RTL_LIST ${RPU_RTL_DIR}/rpu.f)
 if(NOT CMAKE_SCRIPT_MODE_FILE)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${RPU_RTL_LIST})
+  # verilate() re-runs Verilator at configure time only when its command line changes, and adds
+  # the files the last run read (<prefix>_copy.cmake, <prefix>_DEPS) as sources. A header that
+  # was removed since (the command line names sources, not headers) would then stop the
+  # configure of an existing build directory with "Cannot find source file". Such a stale list
+  # is deleted here, so that verilate() runs Verilator again for that model.
+  file(GLOB_RECURSE rpu_vcopies LIST_DIRECTORIES false ${CMAKE_BINARY_DIR}/*_copy.cmake)
+  foreach(copy IN LISTS rpu_vcopies)
+    file(STRINGS ${copy} deps REGEX "^set\\(V[A-Za-z0-9_]*_DEPS ")
+    string(REGEX MATCHALL "\"[^\"]+\"" deps "${deps}")
+    foreach(dep IN LISTS deps)
+      string(REPLACE "\"" "" dep "${dep}")
+      if(NOT EXISTS "${dep}")
+        message(STATUS "${copy}: ${dep} no longer exists; Verilator runs again")
+        file(REMOVE ${copy})
+        break()
+      endif()
+    endforeach()
+  endforeach()
+  unset(rpu_vcopies)
 endif()
 file(STRINGS ${RPU_RTL_LIST} rpu_rtl_lines)
 set(RPU_RTL_SOURCES "")
