@@ -203,20 +203,23 @@ std::string explain_item(const ref::ModelScene& m, const WorkItem& item) {
                      "ovf {}\n", si.pred1 ? 1 : 0, dec(si.tc), dec(si.half_chord), vec(si.A),
                      vec(si.B), dec(si.alpha), dec(si.beta), ovf.flag ? 1 : 0);
     if (!si.pred1) return s + "    (no pred1: the IP and capture do not run)\n";
-    ref::IpState st = ref::ip_start(p, sd, si, ovf);
-    s += fmt::format("    IP step 0: tau {} lo t {} X {} md {} | hi t {} X {} md {}\n", st.tau,
-                     dec(st.lo.t), vec(st.lo.X), dec(st.lo.md), dec(st.hi.t), vec(st.hi.X),
+    const ref::PairFrame f = ref::frame_unit(p, sd, si);
+    s += fmt::format("    frame unit: x0 {} x1 {} y0 {} y1 {} w [{} {} {}]\n", dec(f.x0), dec(f.x1),
+                     dec(f.y0), dec(f.y1), dec(f.w[0]), dec(f.w[1]), dec(f.w[2]));
+    ref::IpState st = ref::ip_start(p, sd, f, ovf);
+    s += fmt::format("    IP step 0: tau {} lo md {} | hi md {}\n", st.tau, dec(st.lo.md),
                      dec(st.hi.md));
     for (int k = 1; k <= p.K(); ++k) {
       ref::IpStepTrace tr;
-      st = ref::ip_step(p, sd, si, st, ovf, &tr);
+      st = ref::ip_step(p, sd, f, st, ovf, &tr);
       std::string sums;
       for (int q = 0; q < p.J(); ++q) sums += (q ? " " : "") + dec(tr.sd[static_cast<size_t>(q)]);
-      s += fmt::format("    IP step {}: sums [{}] eta {} -> tau {} lo t {} X {} | hi t {} X {} "
-                       "ovf {}\n", k, sums, tr.eta, st.tau, dec(st.lo.t), vec(st.lo.X),
-                       dec(st.hi.t), vec(st.hi.X), ovf.flag ? 1 : 0);
+      s += fmt::format("    IP step {}: sums [{}] eta {} -> tau {} lo md {} | hi md {} ovf {}\n",
+                       k, sums, tr.eta, st.tau, dec(st.lo.md), dec(st.hi.md), ovf.flag ? 1 : 0);
     }
-    const ref::CaptureOut c = ref::capture_unit(p, m.camera, ray, st.lo.X, st.lo.t);
+    const ref::TestPoint tp = ref::test_point_unit(p, sd, si, st.tau, ovf);
+    s += fmt::format("    test point: t {} X {}\n", dec(tp.t), vec(tp.X));
+    const ref::CaptureOut c = ref::capture_unit(p, m.camera, ray, tp.X, tp.t);
     s += fmt::format("    capture: signs L{} R{} T{} B{} t_in_range {} hit {} depth {}\n",
                      c.signs[0] ? 1 : 0, c.signs[1] ? 1 : 0, c.signs[2] ? 1 : 0,
                      c.signs[3] ? 1 : 0, c.t_in_range ? 1 : 0, c.hit ? 1 : 0, dec(c.depth));

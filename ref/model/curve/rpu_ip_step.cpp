@@ -14,14 +14,14 @@ int argmin_lowest(const i128* sd, int count) {
   return best;
 }
 
-IpState ip_start(const HwParams& p, const SegmentDesc& s, const SearchInterval& si, Overflow& ovf) {
+IpState ip_start(const HwParams& p, const SegmentDesc& s, const PairFrame& f, Overflow& ovf) {
   IpState st;
-  st.lo = candidate_evaluator(p, s, si, 0, ovf);
-  st.hi = candidate_evaluator(p, s, si, std::uint64_t{1} << p.n, ovf);
+  st.lo = candidate_evaluator(p, s.frame, f, 0, 0, ovf);
+  st.hi = candidate_evaluator(p, s.frame, f, std::uint64_t{1} << p.n, 0, ovf);
   return st;
 }
 
-void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const PairFrame& f,
                       IpState& st, Overflow& ovf, IpStepTrace* trace) {
   const int J = p.J();
   const int k = st.k + 1;
@@ -30,7 +30,8 @@ void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInter
   thread_local std::vector<Candidate> cand;
   if (cand.size() < static_cast<size_t>(J) + 1) cand.resize(static_cast<size_t>(J) + 1);
   for (int j = 1; j < J; ++j)
-    cand[j] = candidate_evaluator(p, s, si, st.tau + (static_cast<std::uint64_t>(j) << shift), ovf);
+    cand[j] = candidate_evaluator(p, s.frame, f, st.tau + (static_cast<std::uint64_t>(j) << shift),
+                                  k, ovf);
   const auto md = [&](int j) { return j == 0 ? st.lo.md : j == J ? st.hi.md : cand[j].md; };
   std::array<i128, 256> sd;  // uninitialised: only [0, J) is written and read
   for (int j = 0; j < J; ++j) sd[j] = md(j) + md(j + 1);
@@ -46,10 +47,10 @@ void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInter
   if (eta > 0) st.lo = cand[eta];          // else lo stays the previous lo
 }
 
-IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+IpState ip_step(const HwParams& p, const SegmentDesc& s, const PairFrame& f,
                 const IpState& state, Overflow& ovf, IpStepTrace* trace) {
   IpState next = state;
-  ip_step_in_place(p, s, si, next, ovf, trace);
+  ip_step_in_place(p, s, f, next, ovf, trace);
   return next;
 }
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "model/curve/rpu_candidate.h"
-#include "model/curve/rpu_sphere.h"
+#include "model/curve/rpu_frame.h"
 #include "model/datapath.h"
 
 namespace rpu::ref {
@@ -23,12 +23,12 @@ struct IpStepTrace {
   int eta = 0;
 };
 // The initial state (step 0): candidates τ = 0 and τ = 1 evaluated.
-IpState ip_start(const HwParams& p, const SegmentDesc& s, const SearchInterval& si, Overflow& ovf);
+IpState ip_start(const HwParams& p, const SegmentDesc& s, const PairFrame& f, Overflow& ovf);
 // Step k = state.k + 1: J - 1 new candidates, pair sums, lowest-index argmin.
-IpState ip_step(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+IpState ip_step(const HwParams& p, const SegmentDesc& s, const PairFrame& f,
                 const IpState& state, Overflow& ovf, IpStepTrace* trace = nullptr);
 // The same step updating `state` in place (the model's hot loop).
-void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+void ip_step_in_place(const HwParams& p, const SegmentDesc& s, const PairFrame& f,
                       IpState& state, Overflow& ovf, IpStepTrace* trace = nullptr);
 // Lowest-index argmin of the pair sums (in rtl/curve/rpu_ip_step): strict < keeps the first
 // minimum.
