@@ -69,6 +69,12 @@ struct HwParams {
   static_assert(kFrameFrac >= kFrameGuideFrac && kFrameFrac >= kFrameMdFracMax &&
                 kFrameWFrac >= kFrameGuideFrac && 2 * kFrameGuideFrac >= kFrameWFrac);
   // An arc guide's radicand η² + w with η ≤ 16 (kFlatRatio): below 2^(2·FG + 9).
+  // The candidate's input widths (signed): x, y (|x| < 4), t, c2·t, s2·t (|t| < 8), W (|w| < 128),
+  // a flat guide's offset (|ĝ| < 4).
+  static constexpr int kCandXW = kFrameFrac + 3;
+  static constexpr int kCandTW = kFrameProdFrac + 4;
+  static constexpr int kCandWW = kFrameWFrac + 8;
+  static constexpr int kCandAW = kFrameGuideFrac + 3;
   static constexpr int frame_radicand_w() { return 2 * kFrameGuideFrac + 9; }
   int md_frac(int k) const { return std::min(kFrameMdFracMax, kFrameMdFracBase + n1 * k); }
   // Upper limits of the widths a user may raise (the table's maxima; validate() checks them).

@@ -25,3 +25,20 @@
 
 // The indicator's part of a surface descriptor (rpu_surface_desc.vh), one word: 15·LW + 61 bits.
 `define RPU_SDW(surfw)       (15 * (surfw) + 61)
+
+// The candidate evaluator in the chord's 2-D frame (docs/fixed-point.md, "The candidate in the
+// chord's frame"; HwParams::kFrame*, kCand*): fixed formats in units of the chord length L.
+`define RPU_FX               24                     // frame coordinates x, y
+`define RPU_FG               17                     // guides' offsets ĝ = g/L
+`define RPU_FW               28                     // w = t(1−t)
+`define RPU_FP               23                     // t, c2·t, s2·t into the guide products
+`define RPU_FOB              14                     // md fraction bits of step 0 ...
+`define RPU_FOMAX            20                     // ... growing by n1 per step up to this
+`define RPU_MDFRAC(n1, k)    (`RPU_FOB + (n1) * (k) < `RPU_FOMAX ? `RPU_FOB + (n1) * (k) : `RPU_FOMAX)
+`define RPU_CXW              (`RPU_FX + 3)          // candidate x, y (|x| < 4)
+`define RPU_CTW              (`RPU_FP + 4)          // candidate t, c2·t, s2·t (|t| < 8)
+`define RPU_CWW              (`RPU_FW + 8)          // candidate w (|w| < 128)
+`define RPU_CAW              (`RPU_FG + 3)          // a flat guide's offset (|ĝ| < 4)
+`define RPU_FRADW            (2 * `RPU_FG + 9)      // an arc guide's radicand η² + w (η ≤ 16)
+`define RPU_ETAW             (`RPU_FG + 5)          // η, unsigned
+`define RPU_FGDW             (2 + `RPU_ETAW + `RPU_FRADW)  // a frame guide {mode, η, η²}

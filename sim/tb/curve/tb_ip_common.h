@@ -91,15 +91,14 @@ void pair_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::Segmen
   }
 }
 
-// Width of one md value, and the state vector {τ, lo.t, lo.X (z, y, x), lo.md, hi.md}.
+// Width of one md value (rpu_candidate's md_o), and the state vector {τ, lo.md, hi.md}.
 inline int md_width(const ref::HwParams& p) {
-  return p.metric == ref::Metric::kAbs ? p.coord_w + 4 : 2 * p.coord_w + 8;
+  constexpr int F = ref::HwParams::kFrameMdFracMax;
+  return p.metric == ref::Metric::kAbs ? F + 3 : 2 * F + 3;
 }
 inline Bits pack_state(const ref::HwParams& p, const ref::IpState& st) {
   Concat c;
   c.add(static_cast<i128>(st.tau), p.n);
-  c.add(st.lo.t, p.t_w());
-  c.add3(st.lo.X.x, st.lo.X.y, st.lo.X.z, p.coord_w + 3);
   c.add(st.lo.md, md_width(p));
   c.add(st.hi.md, md_width(p));
   return c.bits();
@@ -108,15 +107,11 @@ inline Bits pack_state(const ref::HwParams& p, const ref::IpState& st) {
 // The state out of a port, compared field by field with the expected one.
 template <class P>
 void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w) {
-  const int TW = p.t_w(), XW = p.coord_w + 3, MdW = md_width(p);
-  const Bits b = get_bits(port, p.n + TW + 3 * XW + 2 * MdW);
+  const int MdW = md_width(p);
+  const Bits b = get_bits(port, p.n + 2 * MdW);
   int at = b.width();
   const auto next = [&](int w) { return at -= w; };
   o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
-  o.value("lo.t", w.lo.t, b.field_signed(next(TW), TW));
-  const i128 z = b.field_signed(next(XW), XW), y = b.field_signed(next(XW), XW);
-  const i128 x = b.field_signed(next(XW), XW);
-  o.value("lo.X.x", w.lo.X.x, x).value("lo.X.y", w.lo.X.y, y).value("lo.X.z", w.lo.X.z, z);
   o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
   o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
 }
