@@ -115,7 +115,7 @@ FrameDesc quantize_frame(const scene::CompiledSegment& cs, const SegmentDesc& s,
   }
   e1 = normalize(e1 - dh * dot(e1, dh));
   const Vec3 e2 = cross(dh, e1);
-  // |e/L| ≤ 1/L < 2^-(bit_length(ceil L) - 1): the mantissas stay within 2^EM.
+  // |e/L| ≤ 1/L < 2^-(bit_length(ceil L) - 1): |m| < 2^(EM+1), EM + 2 signed bits (18).
   f.s = HwParams::kFrameMant +
         fixed::bit_length(static_cast<fixed::u128>(static_cast<i64>(std::ceil(L))));
   const double sc = std::ldexp(1.0, f.s) / L;

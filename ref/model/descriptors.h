@@ -42,7 +42,7 @@ struct GuideDesc {
 
 // The chord's 2-D frame of a curve segment (docs/fixed-point.md, "The candidate in the chord's
 // frame"): unit vectors e1, e2 ⊥ d (e1 along the first curved guide, e2 = d̂ × e1), stored as
-// e/L = m · 2^-s with |m| ≤ 2^EM, the second guide's direction in the frame, and each guide's
+// e/L = m · 2^-s with |m| < 2^(EM+1), the second guide's direction in the frame, and each guide's
 // shape in units of L (η = h/L).
 struct FrameGuide {
   GuideMode mode = GuideMode::kStraight;  // as GuideDesc::mode

@@ -61,7 +61,7 @@ struct HwParams {
   static constexpr int kFrameGuideFrac = 17;
   static constexpr int kFrameWFrac = 28;
   static constexpr int kFrameProdFrac = 23;
-  static constexpr int kFrameMant = 17;
+  static constexpr int kFrameMant = 16;
   static constexpr int kFrameFlatFrac = 24;
   static constexpr int kFrameCosFrac = 16;
   static constexpr int kFrameMdFracBase = 14;
