@@ -568,7 +568,7 @@ TEST(RefModel, UnrolledAndIterativeProcessesAreEqual) {
           Overflow o1, o2;
           const SearchInterval si = sphere_unit(p, m.camera.eye, ray.vhat, s, o1);
           if (!si.pred1) continue;
-          const PairFrame f = frame_unit(p, s, si);
+          const PairFrame f = frame_unit(p, s, si, o1);
           const IpState a = ip_process_unrolled(p, s, f, o1);
           const IpState b = ip_process_iterative(p, s, f, o2);
           ASSERT_EQ(a.tau, b.tau);

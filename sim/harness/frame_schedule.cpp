@@ -203,7 +203,7 @@ std::string explain_item(const ref::ModelScene& m, const WorkItem& item) {
                      "ovf {}\n", si.pred1 ? 1 : 0, dec(si.tc), dec(si.half_chord), vec(si.A),
                      vec(si.B), dec(si.alpha), dec(si.beta), ovf.flag ? 1 : 0);
     if (!si.pred1) return s + "    (no pred1: the IP and capture do not run)\n";
-    const ref::PairFrame f = ref::frame_unit(p, sd, si);
+    const ref::PairFrame f = ref::frame_unit(p, sd, si, ovf);
     s += fmt::format("    frame unit: x0 {} x1 {} y0 {} y1 {} w [{} {} {}]\n", dec(f.x0), dec(f.x1),
                      dec(f.y0), dec(f.y1), dec(f.w[0]), dec(f.w[1]), dec(f.w[2]));
     ref::IpState st = ref::ip_start(p, sd, f, ovf);

@@ -5,15 +5,19 @@ namespace rpu::ref {
 
 using fixed::truncate;
 
-PairFrame frame_unit(const HwParams& p, const SegmentDesc& s, const SearchInterval& si) {
+PairFrame frame_unit(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                     Overflow& ovf) {
   PairFrame f;
   const FrameDesc& fd = s.frame;
   const int sh = fd.s - HwParams::kFrameFrac;  // e/L · 2^FX = m · 2^-sh
   const WVec3 a = si.A - widen(s.p1);
-  f.x0 = truncate(dot(a, widen(fd.e1)), sh);
-  f.y0 = truncate(dot(a, widen(fd.e2)), sh);
-  f.x1 = truncate(dot(si.AB, widen(fd.e1)), sh);
-  f.y1 = truncate(dot(si.AB, widen(fd.e2)), sh);
+  const auto proj = [&](const WVec3& v, const IVec3& e) {
+    return fixed::saturate(truncate(dot(v, widen(e)), sh), HwParams::kCandXW, ovf);
+  };
+  f.x0 = proj(a, fd.e1);
+  f.y0 = proj(a, fd.e2);
+  f.x1 = proj(si.AB, fd.e1);
+  f.y1 = proj(si.AB, fd.e2);
   f.alpha = si.alpha;
   f.beta = si.beta;
   f.c2a = fd.c2 * si.alpha;
@@ -29,11 +33,11 @@ PairFrame frame_unit(const HwParams& p, const SegmentDesc& s, const SearchInterv
   f.w[2] = truncate(-(si.beta * si.beta), ft2 - fw);
   // A flat guide: ĝ = w/(2η) ≤ 2^-7, from W's coefficients floored to FG + 2n − i·n fraction
   // bits (the product stays within 2^(FA + FG + 2n + 1)).
+  // (a is 0 unless the guide is flat, so the products are 0 there.)
   for (int k = 0; k < 2; ++k)
-    if (fd.guide[k].mode == GuideMode::kFlat)
-      for (int i = 0; i < 3; ++i)
-        f.a[k][i] = truncate(fd.guide[k].a * truncate(f.w[i], fw - HwParams::kFrameGuideFrac),
-                             HwParams::kFrameFlatFrac);
+    for (int i = 0; i < 3; ++i)
+      f.a[k][i] = truncate(fd.guide[k].a * truncate(f.w[i], fw - HwParams::kFrameGuideFrac),
+                           HwParams::kFrameFlatFrac);
   return f;
 }
 

@@ -23,6 +23,9 @@ struct PairFrame {
   // A flat guide k: A_k(m) = a_k·W(m) coefficient by coefficient, ≈ ĝ_k·2^(FG+2n).
   i128 a[2][3] = {{0, 0, 0}, {0, 0, 0}};
 };
-PairFrame frame_unit(const HwParams& p, const SegmentDesc& s, const SearchInterval& si);
+// x0, x1, y0, y1 saturate to kCandXW bits (|·| < 4; ovf): only a saturated A or B (the sphere
+// unit's ovf) reaches that. The other coefficients are exact (docs/fixed-point.md gives widths).
+PairFrame frame_unit(const HwParams& p, const SegmentDesc& s, const SearchInterval& si,
+                     Overflow& ovf);
 
 }  // namespace rpu::ref

@@ -14,7 +14,7 @@ PairResult process_curve_pair(const HwParams& p, const CameraDesc& cam, const Ra
   Overflow ovf;
   r.interval = sphere_unit(p, cam.eye, ray.vhat, s, ovf);
   if (r.interval.pred1) {
-    const PairFrame f = frame_unit(p, s, r.interval);
+    const PairFrame f = frame_unit(p, s, r.interval, ovf);
     const IpState st = ip_process(p, s, f, ovf);
     r.tau = st.tau;
     const TestPoint tp = test_point_unit(p, s, r.interval, st.tau, ovf);

@@ -64,7 +64,8 @@ int main(int argc, char** argv) {
     sim::SampledPair pair;
     if (!sim::sample_pred1_pair(sc, m, p, rng, pair)) continue;
     const ref::SegmentDesc& s = m.curve_segments[pair.seg];
-    const ref::PairFrame f = ref::frame_unit(p, s, pair.si);
+    fixed::Overflow o0;
+    const ref::PairFrame f = ref::frame_unit(p, s, pair.si, o0);
     for (int r = 0; r < 8; ++r) {
       Item it{pair.seg, static_cast<int>(rng() % 4), s.frame, {}, static_cast<unsigned>(rng() & 1),
               {}, false};
