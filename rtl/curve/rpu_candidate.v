@@ -6,6 +6,8 @@
 //   gx  = floor(ĝ1·(1 − t') / 2^FP) + floor(ĝ2·c2t' / 2^FP),  gy = floor(ĝ2·s2t' / 2^FP)
 //   o   = sat(floor((x, y) − (gx, gy)·2^(FX−FG)) / 2^(FX−Fo)), Fo + 2 bits)
 //   md  = isqrt(ox² + oy²) · 2^(FOMAX−Fo)  or  (ox² + oy²) · 2^(2·(FOMAX−Fo))   (Metric)
+// Fo is a parameter (an unrolled step's md_frac(k)), or 0: it comes with the item on fo_i (the
+// iterative form's step unit; widths then as for FOMAX).
 // Three products of ≤ 25 × 18 bits (one DSP48E1 each) and two squares of Fo + 2 bits. Fixed
 // latency; the candidate's context rides in the sub-units' tags.
 `default_nettype none
@@ -13,7 +15,7 @@
 
 module rpu_candidate #(
   parameter integer SqrtW  = 0,   // widest square-root radicand; 0 = exact
-  parameter integer Fo     = 20,  // fraction bits of the offsets: md_frac(k) of the step
+  parameter integer Fo     = 20,  // fraction bits of the offsets: md_frac(k) of the step, or 0
   parameter integer Metric = 0,   // 0: md = |o| (seed), 1: md = |o|²
   parameter integer TagW   = 1,   // side-band bits (>= 1)
   // Derived (do not override).
@@ -27,6 +29,7 @@ module rpu_candidate #(
   input  wire              clk_i,
   input  wire              rst_ni,
   input  wire              valid_i,
+  input  wire [4:0]        fo_i,    // the offsets' fraction bits when Fo == 0 (8..FOMAX)
   input  wire [XW-1:0]     x_i,     // FX
   input  wire [XW-1:0]     y_i,
   input  wire [TW-1:0]     t_i,     // FP
@@ -46,12 +49,17 @@ module rpu_candidate #(
   localparam integer FOMAX = `RPU_FOMAX;
   localparam integer RadW = `RPU_FRADW, EtaW = `RPU_ETAW;
   localparam integer GW  = FG + 1;   // ĝ, signed: 0 ≤ ĝ < 1
-  localparam integer OW  = Fo + 2;   // offsets, signed: |o| < 2
-  localparam integer M2W = 2 * Fo + 3;
+  localparam integer FoW = Fo == 0 ? FOMAX : Fo;  // the widths' Fo
+  localparam integer OW  = FoW + 2;  // offsets, signed: |o| < 2
+  localparam integer M2W = 2 * FoW + 3;
+  // The item's tag inside: {fo, tag}.
+  localparam integer ITW = TagW + 5;
+  localparam [4:0] FoC = Fo[4:0], FxC = `RPU_FX, FomaxC = `RPU_FOMAX;
+  wire [ITW-1:0] itag_i = {Fo == 0 ? fo_i : FoC, tag_i};
 
   initial begin
     if (Metric != 0 && Metric != 1) $fatal(1, "rpu_candidate: Metric must be 0 or 1");
-    if (Fo < 8 || Fo > FOMAX) $fatal(1, "rpu_candidate: Fo must be in 8..FOMAX");
+    if (Fo != 0 && (Fo < 8 || Fo > FOMAX)) $fatal(1, "rpu_candidate: Fo must be 0 or in 8..FOMAX");
     if (GdW != 2 + EtaW + RadW) $fatal(1, "rpu_candidate: GdW is derived; do not override it");
   end
 
@@ -74,14 +82,14 @@ module rpu_candidate #(
   wire [GW-1:0] fl1 = a1_s < 0 ? {GW{1'b0}} : a1_s > GMax ? GMax[GW-1:0] : a1_s[GW-1:0];
   wire [GW-1:0] fl2 = a2_s < 0 ? {GW{1'b0}} : a2_s > GMax ? GMax[GW-1:0] : a2_s[GW-1:0];
   // Context to the guide products: x, y, t', c2t', s2t', the flat offsets, modes, η's, tag.
-  localparam integer CtxW = 2*XW + (FP+1) + 2*(FP+2) + 2*GW + 4 + 2*EtaW + TagW;
+  localparam integer CtxW = 2*XW + (FP+1) + 2*(FP+2) + 2*GW + 4 + 2*EtaW + ITW;
   wire                valid_1;
   wire [RadW-1:0]     r1_1, r2_1;
   wire [CtxW-1:0]     ctx_1;
   rpu_stage #(.W(2*RadW + CtxW)) u_s1 (
     .clk_i, .rst_ni, .valid_i,
     .d_i({ee1 + wsh, ee2 + wsh, x_i, y_i, t_c, c2_c, s2_c, fl1, fl2, mode1, mode2, eta1, eta2,
-          tag_i}),
+          itag_i}),
     .valid_o(valid_1), .q_o({r1_1, r2_1, ctx_1}));
 
   // ---- the two arc roots (the first carries the context) ----
@@ -103,7 +111,7 @@ module rpu_candidate #(
   wire [GW-1:0]   fl1_r, fl2_r;
   wire [1:0]      mode1_r, mode2_r;
   wire [EtaW-1:0] eta1_r, eta2_r;
-  wire [TagW-1:0] tag_r;
+  wire [ITW-1:0] tag_r;
   assign {x_r, y_r, t_r, c2_r, s2_r, fl1_r, fl2_r, mode1_r, mode2_r, eta1_r, eta2_r, tag_r} = ctx_r;
 
   // ---- stage 2: the guides' offsets, 1 − t' ----
@@ -113,7 +121,7 @@ module rpu_candidate #(
   wire [GW-1:0] gh2 = mode2_r == ModeArc ? arc2[GW-1:0] : mode2_r == ModeFlat ? fl2_r : {GW{1'b0}};
   localparam [FP:0] OneU = 1 << FP;
   wire [FP+1:0] omt = {1'b0, OneU - t_r};
-  localparam integer Ctx2W = 2*XW + TagW;
+  localparam integer Ctx2W = 2*XW + ITW;
   wire             valid_2;
   wire [GW-1:0]    gh1_2, gh2_2;
   wire [FP+1:0]    omt_2, c2_2, s2_2;
@@ -145,13 +153,13 @@ module rpu_candidate #(
   localparam integer GxW = GW + 3;  // |gx| < 2, signed, with room
   wire signed [GxW-1:0] gx = q1[GxW-1:0] + q2[GxW-1:0];
   wire [XW-1:0] x_p, y_p;
-  wire [TagW-1:0] tag_p;
+  wire [ITW-1:0] tag_p;
   assign {x_p, y_p, tag_p} = ctx_p;
   wire             valid_3;
   wire [GxW-1:0]   gx_3, gy_3;
   wire [XW-1:0]    x_3, y_3;
-  wire [TagW-1:0]  tag_3;
-  rpu_stage #(.W(2*GxW + 2*XW + TagW)) u_s3 (
+  wire [ITW-1:0]  tag_3;
+  rpu_stage #(.W(2*GxW + 2*XW + ITW)) u_s3 (
     .clk_i, .rst_ni, .valid_i(valid_p), .d_i({gx, q3[GxW-1:0], x_p, y_p, tag_p}),
     .valid_o(valid_3), .q_o({gx_3, gy_3, x_3, y_3, tag_3}));
 
@@ -167,32 +175,45 @@ module rpu_candidate #(
   wire signed [DfW-1:0] dy = ye - (gye <<< (FX - FG));
   wire             valid_4;
   wire [DfW-1:0]   dx_4, dy_4;
-  wire [TagW-1:0]  tag_4;
-  rpu_stage #(.W(2*DfW + TagW)) u_s4 (
+  wire [ITW-1:0]  tag_4;
+  rpu_stage #(.W(2*DfW + ITW)) u_s4 (
     .clk_i, .rst_ni, .valid_i(valid_3), .d_i({dx, dy, tag_3}),
     .valid_o(valid_4), .q_o({dx_4, dy_4, tag_4}));
 
-  // ---- stage 5: floor to Fo fraction bits, saturate to Fo + 2 bits ----
+  // ---- stage 5: floor to Fo fraction bits (a shift by FX − Fo); stage 6: saturate to Fo + 2
+  //      bits (two stages: with Fo at run time the shift and the compare do not fit one) ----
   wire signed [DfW-1:0] dx4_s = dx_4, dy4_s = dy_4;
-  wire signed [DfW-1:0] ex = dx4_s >>> (FX - Fo), ey = dy4_s >>> (FX - Fo);
-  localparam signed [DfW-1:0] OMax = (1 <<< (OW - 1)) - 1, OMin = -OMax;  // symmetric
+  wire [4:0] fo_4 = tag_4[ITW-1 -: 5];
+  wire [4:0] drop = FxC - fo_4;  // FX − Fo
+  // The bounds ±(2^(Fo+1) − 1) (symmetric), registered beside the shifted values.
+  wire [DfW-1:0] one_d = {{(DfW-1){1'b0}}, 1'b1};
+  wire [DfW-1:0] omax_4 = (one_d << (fo_4 + 5'd1)) - one_d;
+  wire             valid_e;
+  wire [DfW-1:0]   ex_e, ey_e, omax_e, omin_e;
+  wire [ITW-1:0]   tag_e;
+  rpu_stage #(.W(4*DfW + ITW)) u_s5e (
+    .clk_i, .rst_ni, .valid_i(valid_4),
+    .d_i({dx4_s >>> drop, dy4_s >>> drop, omax_4, ~omax_4 + one_d, tag_4}),
+    .valid_o(valid_e), .q_o({ex_e, ey_e, omax_e, omin_e, tag_e}));
+  wire signed [DfW-1:0] ex = ex_e, ey = ey_e;
+  wire signed [DfW-1:0] OMax = omax_e, OMin = omin_e;
   wire sat_x = ex > OMax || ex < OMin, sat_y = ey > OMax || ey < OMin;
   wire [OW-1:0] ox = ex > OMax ? OMax[OW-1:0] : ex < OMin ? OMin[OW-1:0] : ex[OW-1:0];
   wire [OW-1:0] oy = ey > OMax ? OMax[OW-1:0] : ey < OMin ? OMin[OW-1:0] : ey[OW-1:0];
   wire             valid_5;
   wire [OW-1:0]    ox_5, oy_5;
   wire             ovf_5;
-  wire [TagW-1:0]  tag_5;
-  rpu_stage #(.W(2*OW + 1 + TagW)) u_s5 (
-    .clk_i, .rst_ni, .valid_i(valid_4), .d_i({ox, oy, sat_x | sat_y, tag_4}),
+  wire [ITW-1:0]  tag_5;
+  rpu_stage #(.W(2*OW + 1 + ITW)) u_s5 (
+    .clk_i, .rst_ni, .valid_i(valid_e), .d_i({ox, oy, sat_x | sat_y, tag_e}),
     .valid_o(valid_5), .q_o({ox_5, oy_5, ovf_5, tag_5}));
 
   // ---- the two squares, their sum ----
   wire              valid_q;
   wire [2*OW-1:0]   sqx, sqy;
-  wire [TagW:0]     ctx_q;
+  wire [ITW:0]     ctx_q;
   wire              vq_unused, tq_unused;
-  rpu_mul #(.AW(OW), .BW(OW), .Signed(1), .TagW(TagW + 1)) u_sqx (
+  rpu_mul #(.AW(OW), .BW(OW), .Signed(1), .TagW(ITW + 1)) u_sqx (
     .clk_i, .rst_ni, .valid_i(valid_5), .a_i(ox_5), .b_i(ox_5), .tag_i({ovf_5, tag_5}),
     .valid_o(valid_q), .p_o(sqx), .tag_o(ctx_q));
   rpu_mul #(.AW(OW), .BW(OW), .Signed(1), .TagW(1)) u_sqy (
@@ -200,8 +221,8 @@ module rpu_candidate #(
     .valid_o(vq_unused), .p_o(sqy), .tag_o(tq_unused));
   wire             valid_6;
   wire [M2W-1:0]   md2_6;
-  wire [TagW:0]    ctx_6;
-  rpu_stage #(.W(M2W + TagW + 1)) u_s6 (
+  wire [ITW:0]    ctx_6;
+  rpu_stage #(.W(M2W + ITW + 1)) u_s6 (
     .clk_i, .rst_ni, .valid_i(valid_q),
     .d_i({{1'b0, sqx[M2W-2:0]} + {1'b0, sqy[M2W-2:0]}, ctx_q}),
     .valid_o(valid_6), .q_o({md2_6, ctx_6}));
@@ -212,18 +233,20 @@ module rpu_candidate #(
       localparam integer MShift = (SqrtW == 0 || M2W <= SqrtW) ? 0 : (M2W - SqrtW + 1) / 2;
       localparam integer MRootW = (M2W - 2 * MShift + 1) / 2 + MShift;
       wire [MRootW-1:0] root;
-      wire [TagW:0]     ctx_o;
-      rpu_sqrt #(.RadW(M2W), .SqrtW(SqrtW), .TagW(TagW + 1)) u_md (
+      wire [ITW:0]     ctx_o;
+      rpu_sqrt #(.RadW(M2W), .SqrtW(SqrtW), .TagW(ITW + 1)) u_md (
         .clk_i, .rst_ni, .valid_i(valid_6), .rad_i(md2_6), .tag_i(ctx_6),
         .valid_o(valid_o), .root_o(root), .tag_o(ctx_o));
       wire [MdW-1:0] root_w = {{(MdW - MRootW){1'b0}}, root};  // MdW > MRootW
-      assign md_o = root_w << (FOMAX - Fo);
-      assign {ovf_o, tag_o} = ctx_o;
+      wire [4:0]     up = FomaxC - ctx_o[ITW-1 -: 5];
+      assign md_o = root_w << up;
+      assign {ovf_o, tag_o} = {ctx_o[ITW], ctx_o[TagW-1:0]};
     end else begin : g_squared
       wire [MdW:0] md2_w = {{(MdW + 1 - M2W){1'b0}}, md2_6};  // MdW + 1 > M2W
       assign valid_o = valid_6;
-      assign md_o = md2_w[MdW-1:0] << (2 * (FOMAX - Fo));
-      assign {ovf_o, tag_o} = ctx_6;
+      wire [4:0]   up = FomaxC - ctx_6[ITW-1 -: 5];
+      assign md_o = md2_w[MdW-1:0] << {up, 1'b0};
+      assign {ovf_o, tag_o} = {ctx_6[ITW], ctx_6[TagW-1:0]};
       wire unused_top = md2_w[MdW];
     end
   endgenerate

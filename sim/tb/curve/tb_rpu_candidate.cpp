@@ -3,7 +3,8 @@
 // random and edge τ indices; a quarter of them with edited frame guides (arc η over [0, 16],
 // flat, straight, the unused mode code 3); a quarter with every input drawn over its whole port
 // width (t, c2·t, s2·t, w and the flat offsets beyond their clamps, offsets that saturate:
-// ovf_o); random valid gaps and a random tag per item (checked).
+// ovf_o); random valid gaps and a random tag per item (checked). FO = 0: the iterative form's
+// run-time Fo, drawn per item over [8, 20] (fo_i).
 #include <vector>
 
 #include "Vrpu_candidate.h"
@@ -16,6 +17,7 @@
 struct Item {
   size_t seg;
   int kind;  // 0 real, 1 edited guides, 2 random inputs
+  int fo;    // the offsets' fraction bits
   ref::FrameDesc fd;
   ref::CandidateIn in;
   unsigned tag;
@@ -67,8 +69,9 @@ int main(int argc, char** argv) {
     fixed::Overflow o0;
     const ref::PairFrame f = ref::frame_unit(p, s, pair.si, o0);
     for (int r = 0; r < 8; ++r) {
-      Item it{pair.seg, static_cast<int>(rng() % 4), s.frame, {}, static_cast<unsigned>(rng() & 1),
-              {}, false};
+      Item it{pair.seg, static_cast<int>(rng() % 4), FO, s.frame, {},
+              static_cast<unsigned>(rng() & 1), {}, false};
+      if (FO == 0) it.fo = 8 + static_cast<int>(rng() % (H::kFrameMdFracMax - 7));
       it.kind = it.kind == 3 ? 0 : it.kind;
       const std::uint64_t full = std::uint64_t{1} << p.n;
       const std::uint64_t edges[] = {0, full, 1, full - 1, full / 2};
@@ -87,7 +90,7 @@ int main(int argc, char** argv) {
         for (i128& a : it.in.a) a = sim::random_signed(rng, H::kCandAW);
       }
       fixed::Overflow o2;
-      it.want = ref::candidate_unit(p, it.fd, it.in, FO, o2);
+      it.want = ref::candidate_unit(p, it.fd, it.in, it.fo, o2);
       it.ovf = o2.flag;
       ++n_kind[it.kind];
       n_sat += it.ovf ? 1 : 0;
@@ -108,7 +111,7 @@ int main(int argc, char** argv) {
   };
   sim::Stream<Vrpu_candidate, Item> s{.latency = sim::kSameLatency, .tag_w = 0};  // its own tag
   s.inputs = [&](sim::Inputs& in, Vrpu_candidate& t, const Item& it) {
-    in("x", t.x_i, it.in.x, H::kCandXW)("y", t.y_i, it.in.y, H::kCandXW);
+    in("fo", t.fo_i, it.fo, 5)("x", t.x_i, it.in.x, H::kCandXW)("y", t.y_i, it.in.y, H::kCandXW);
     in("t", t.t_i, it.in.t, H::kCandTW)("c2t", t.c2t_i, it.in.c2t, H::kCandTW);
     in("s2t", t.s2t_i, it.in.s2t, H::kCandTW)("w", t.w_i, it.in.w, H::kCandWW);
     in.fields("a", t.a_i, std::vector<i128>{it.in.a[0], it.in.a[1]}, H::kCandAW);
