@@ -14,6 +14,24 @@ int argmin_lowest(const i128* sd, int count) {
   return best;
 }
 
+FrameState frame_state(const HwParams& p, const PairFrame& f, std::uint64_t m0) {
+  const i128 m = static_cast<i128>(m0);
+  const int n = p.n;
+  FrameState s;
+  s.X = (f.x0 << n) + f.x1 * m;
+  s.Y = (f.y0 << n) + f.y1 * m;
+  s.T = (f.alpha << n) + f.beta * m;
+  s.C2 = (f.c2a << n) + f.c2b * m;
+  s.S2 = (f.s2a << n) + f.s2b * m;
+  s.W = f.w[0] + f.w[1] * m + f.w[2] * m * m;
+  s.SW = f.w[1] + 2 * f.w[2] * m;
+  for (int k = 0; k < 2; ++k) {
+    s.A[k] = f.a[k][0] + f.a[k][1] * m + f.a[k][2] * m * m;
+    s.SA[k] = f.a[k][1] + 2 * f.a[k][2] * m;
+  }
+  return s;
+}
+
 IpState ip_start(const HwParams& p, const SegmentDesc& s, const PairFrame& f, Overflow& ovf) {
   IpState st;
   st.lo = candidate_evaluator(p, s.frame, f, 0, 0, ovf);
