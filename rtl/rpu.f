@@ -35,6 +35,7 @@ curve/rpu_guide_pair.v
 curve/rpu_curve_point.v
 curve/rpu_frame.v
 curve/rpu_candidate.v
+curve/rpu_test_point.v
 curve/rpu_ip_step.v
 curve/rpu_ip.v
 curve/rpu_capture.v

@@ -72,19 +72,20 @@ inline bool sample_pred1_pair(const scene::CompiledScene& sc, const ref::ModelSc
   return out.si.pred1;
 }
 
-// The interval and segment input fields shared by rpu_candidate, rpu_ip_step and rpu_ip.
+// The interval and segment input fields shared by rpu_test_point and rpu_ip (A and B − A where
+// the unit has them).
 template <class Top>
 void pair_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::SegmentDesc& s,
                  const ref::SearchInterval& si) {
   const int CW = p.coord_w, DW = p.diff_w(), TW = p.t_w();
-  in.vec("A", top.a_i, si.A, CW).vec("AB", top.ab_i, si.AB, DW);
+  if constexpr (requires { top.a_i; }) in.vec("A", top.a_i, si.A, CW).vec("AB", top.ab_i, si.AB, DW);
   in("alpha", top.alpha_i, si.alpha, TW)("beta", top.beta_i, si.beta, TW);
   in.vec("p1", top.p1_i, s.p1, CW).vec("d", top.d_i, s.d, DW)("L2", top.l2_i, s.L2, p.l2_w());
   const ref::GuideDesc& g1 = s.guide[0];
   const ref::GuideDesc& g2 = s.guide[1];
   guide_input(in, "g1", top.g1_i, p, g1);
   guide_input(in, "g2", top.g2_i, p, g2);
-  // rpu_candidate and rpu_ip_step take h² from their caller (rpu_ip squares h once per pair).
+  // rpu_test_point takes h² from its caller (rpu_ip squares h once per pair).
   if constexpr (requires { top.hh1_i; }) {
     in("hh1", top.hh1_i, i128{g1.h} * g1.h, p.guide_radicand_w());
     in("hh2", top.hh2_i, i128{g2.h} * g2.h, p.guide_radicand_w());
