@@ -9,6 +9,7 @@
 
 #include "tb_base.h"
 #include "tb_guide.h"
+#include "model/curve/rpu_test_point.h"
 
 namespace rpu::sim {
 
@@ -113,6 +114,49 @@ void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref:
   int at = b.width();
   const auto next = [&](int w) { return at -= w; };
   o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
+  o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
+  o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
+}
+
+
+// The frame descriptor {e1, e2, s, c2, s2, a1, a2} (rpu_frame's fr_i) and the frame guides
+// {g1, g2}, each {mode, η, η²} (rpu_candidate's g1_i, g2_i; rpu_ip's fg_i).
+inline Bits frame_bits(const ref::FrameDesc& f) {
+  using H = ref::HwParams;
+  const int EW = H::kFrameMant + 2, CW2 = H::kFrameCosFrac + 2, AW = H::kFrameFlatFrac - 3;
+  Concat c;
+  c.add3(f.e1.x, f.e1.y, f.e1.z, EW);
+  c.add3(f.e2.x, f.e2.y, f.e2.z, EW);
+  c.add(f.s, 6);
+  c.add(f.c2, CW2);
+  c.add(f.s2, CW2);
+  c.add(f.guide[0].a, AW);
+  c.add(f.guide[1].a, AW);
+  return c.bits();
+}
+inline Bits frame_guide_bits(const ref::FrameDesc& f) {
+  using H = ref::HwParams;
+  Concat c;
+  for (const ref::FrameGuide& g : f.guide) {
+    c.add(static_cast<i128>(g.mode), 2);
+    c.add(g.eta, H::kFrameGuideFrac + 5);
+    c.add(g.eta2, H::frame_radicand_w());
+  }
+  return c.bits();
+}
+// rpu_ip's result {τ, t, X (z, y, x), lo.md, hi.md}, compared field by field.
+template <class P>
+void ip_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w,
+                const ref::TestPoint& tp) {
+  const int TW = p.t_w(), XW = p.coord_w + 3, MdW = md_width(p);
+  const Bits b = get_bits(port, p.n + TW + 3 * XW + 2 * MdW);
+  int at = b.width();
+  const auto next = [&](int w) { return at -= w; };
+  o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
+  o.value("t", tp.t, b.field_signed(next(TW), TW));
+  const i128 z = b.field_signed(next(XW), XW), y = b.field_signed(next(XW), XW);
+  const i128 x = b.field_signed(next(XW), XW);
+  o.value("X.x", tp.X.x, x).value("X.y", tp.X.y, y).value("X.z", tp.X.z, z);
   o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
   o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
 }
