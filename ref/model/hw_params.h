@@ -96,10 +96,15 @@ struct HwParams {
   int l2_w() const { return 2 * coord_w + 3; }            // L2W: L² = |d|²
   int guide_desc_w() const { return 2 + guide_h_w() + coord_w + t_frac + 3 * unit_w(); }  // GdW
   int camera_desc_w() const { return 9 * ray_dir_w() + 12 * edge_w() + 3 * coord_w; }    // CamW
-  // SegW: {texture, primitive, p1, d, c0, R2, L2, inv_m, inv_s, two guides}
+  // SegW: {texture, primitive, p1, d, c0, R2, L2, inv_m, inv_s, two guides, the frame
+  // descriptor, two frame guides}
+  static constexpr int frame_desc_w() {  // {e1, e2, s, c2, s2, a1, a2}: `RPU_FRDW
+    return 6 * (kFrameMant + 2) + 6 + 2 * (kFrameCosFrac + 2) + 2 * (kFrameFlatFrac - 3);
+  }
+  static constexpr int frame_guide_w() { return 2 + kFrameGuideFrac + 5 + frame_radicand_w(); }
   int segment_desc_w(int prim_w) const {
     return 1 + prim_w + 3 * coord_w + 3 * diff_w() + 3 * coord_w + r2_w() + l2_w() + inv_w + 7 +
-           2 * guide_desc_w();
+           2 * guide_desc_w() + frame_desc_w() + 2 * frame_guide_w();
   }
   int depth_w() const { return coord_w + 4 + edge_w() + 2; }  // DepthW: (X - h)·W
   // Surfaces: guard bits G of the scaled local coordinates (x·k floored to G bits below the
