@@ -43,6 +43,7 @@ curve/rpu_capture.v
 // header: curve/rpu_guide_shape.vh
 // header: curve/rpu_ip_params.vh
 // header: curve/rpu_ip_derived.vh
+// header: curve/rpu_frame_fn.vh
 
 // texture: the texture path
 texture/rpu_ray_plane.v

@@ -124,34 +124,7 @@ module rpu_ip #(
   wire [CtxW-1:0]     ctx_h;
   assign {p1_h, d_h, l2_h, g1_h, g2_h, fg_h, ctx_h} = tag_h;
 
-  // Sign extension to 128 bits of a w-bit wire F.
-`define RPU_SX(F, W) {{(128-(W)){F[(W)-1]}}, F}
-  function automatic [127:0] fl(input [127:0] v, input integer e);  // floor(v / 2^e)
-    reg signed [127:0] vs;
-    begin
-      vs = v;
-      if (e >= 0) fl = vs >>> e;
-      else        fl = v << (-e);
-    end
-  endfunction
-  function automatic [127:0] sat(input [127:0] v, input integer w);
-    reg signed [127:0] vs, hi, lo;
-    begin
-      vs = v;
-      hi = (128'sd1 <<< (w - 1)) - 128'sd1;
-      lo = -(128'sd1 <<< (w - 1));
-      sat = vs > hi ? hi : vs < lo ? lo : vs;
-    end
-  endfunction
-  function automatic issat(input [127:0] v, input integer w);
-    reg signed [127:0] vs, hi, lo;
-    begin
-      vs = v;
-      hi = (128'sd1 <<< (w - 1)) - 128'sd1;
-      lo = -(128'sd1 <<< (w - 1));
-      issat = vs > hi || vs < lo;
-    end
-  endfunction
+`include "rpu_frame_fn.vh"
   wire [CXW-1:0] x0 = xy_h[3*CXW +: CXW], x1 = xy_h[2*CXW +: CXW];
   wire [CXW-1:0] y0 = xy_h[CXW +: CXW],   y1 = xy_h[0 +: CXW];
   wire [CaW-1:0] c2a = cs_h[3*CaW +: CaW], c2b = cs_h[2*CaW +: CaW];

@@ -86,8 +86,6 @@ module rpu_ip_step #(
     if (oX + XSW != FsW || pX1 + XW != PcW) $fatal(1, "rpu_ip_step: internal: field offsets");
   end
 
-  // A w-bit field sign-extended to 128 bits (F a plain wire name).
-`define RPU_SX(F, W) {{(128-(W)){F[(W)-1]}}, F}
   // c·q for a constant c ≥ 0 (shifts and adds), and e·q for a variable e (a mux per bit), in
   // 128-bit two's complement (the callers keep what fits).
   function automatic [127:0] cmul(input [127:0] q, input integer c);
@@ -106,36 +104,7 @@ module rpu_ip_step #(
         if (e[b]) vmul = vmul + (q << b);
     end
   endfunction
-  // floor(v / 2^e) for a constant e of either sign.
-  // (if/else, not ?: — a conditional with an unsigned arm would make the shift logical)
-  function automatic [127:0] fl(input [127:0] v, input integer e);
-    reg signed [127:0] vs;
-    begin
-      vs = v;
-      if (e >= 0) fl = vs >>> e;
-      else        fl = v << (-e);
-    end
-  endfunction
-  // Saturate a 128-bit value to w signed bits.
-  function automatic [127:0] sat(input [127:0] v, input integer w);
-    reg signed [127:0] vs, hi, lo;
-    begin
-      vs = v;
-      hi = (128'sd1 <<< (w - 1)) - 128'sd1;
-      lo = -(128'sd1 <<< (w - 1));
-      sat = vs > hi ? hi : vs < lo ? lo : vs;
-    end
-  endfunction
-  function automatic issat(input [127:0] v, input integer w);
-    reg signed [127:0] vs, hi, lo;
-    begin
-      vs = v;
-      hi = (128'sd1 <<< (w - 1)) - 128'sd1;
-      lo = -(128'sd1 <<< (w - 1));
-      issat = vs > hi || vs < lo;
-    end
-  endfunction
-
+`include "rpu_frame_fn.vh"
   wire [KW-1:0] k_in = Step == 0 ? k_i : Step[KW-1:0];
   wire [7:0]    sh_in = N[7:0] - N1[7:0] * k_in[7:0];          // log2 D
   // The offsets' fraction bits of this step (the iterative form's candidates take them per item).
