@@ -18,6 +18,7 @@
 // common: the shared arithmetic blocks
 common/rpu_fifo.v
 common/rpu_stage.v
+common/rpu_latency_check.v
 common/rpu_delay.v
 common/rpu_add3.v
 common/rpu_mul.v

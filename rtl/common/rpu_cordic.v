@@ -362,6 +362,11 @@ module rpu_cordic #(
   assign y_o     = yo_q;
   assign angle_o = angle_q;
   assign tag_o   = tag_q;
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_cordic")) u_latency_check (
+    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
+`endif
 endmodule
 
 `default_nettype wire

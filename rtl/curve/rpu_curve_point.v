@@ -126,6 +126,11 @@ module rpu_curve_point #(
     .clk_i, .rst_ni, .valid_i(u_valid), .d_i({x_next, tag_u}), .valid_o, .q_o({x_o, tag_o}));
 
   wire unused_products = ^{g1omt[GW+OmW-1:TFrac+GkW], g1omt[TFrac-1:0], g2t[TFrac-1:0]};
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_curve_point")) u_latency_check (
+    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
+`endif
 endmodule
 
 `default_nettype wire

@@ -275,6 +275,11 @@ module rpu_guide_pair #(
     .clk_i, .rst_ni, .valid_i(sq1_valid),
     .d_i({g1_next, g2_next, sb_w, sb1[HW] | sb2[HW], sb_tag}),
     .valid_o, .q_o({g1_o, g2_o, w_o, ovf_o, tag_o}));
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_guide_pair")) u_latency_check (
+    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
+`endif
 endmodule
 
 `default_nettype wire

@@ -580,6 +580,11 @@ module rpu_sphere #(
   assign alpha_o      = alpha;
   assign beta_o       = beta;
   assign ovf_o        = ovf_r | (pred1_r & (alpha_ovf | beta_ovf));
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_sphere")) u_latency_check (
+    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
+`endif
 endmodule
 
 `default_nettype wire

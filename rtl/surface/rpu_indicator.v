@@ -864,6 +864,12 @@ module rpu_indicator #(
   rpu_stage #(.W(1 + Lanes + AW + CorW + 1 + TagW), .Hold(1)) u_out (
     .clk_i, .rst_ni, .valid_i(vr[BLast]), .d_i({o_inside, o_turns, o_ang, o_rh, o_ovf, o_tag}),
     .valid_o, .q_o({inside_o, turn_inside_o, angle_o, rho_o, ovf_o, tag_o}));
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(LatencyOwn), .Segments(3),
+                     .Name("rpu_indicator (without its CORDICs)")) u_latency_check (
+    .clk_i, .rst_ni, .in_i({valid_i, v_valid, r_valid}), .out_i({f_valid, t3_valid_q, valid_o}));
+`endif
 endmodule
 
 `default_nettype wire

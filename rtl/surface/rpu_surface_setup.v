@@ -697,6 +697,11 @@ module rpu_surface_setup #(
   assign ovf_o         = c14_q[2];
   assign x_negative_o  = c14_q[1];
   assign last_turn_o   = c14_q[0];
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_surface_setup")) u_latency_check (
+    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
+`endif
 endmodule
 
 `default_nettype wire

@@ -430,6 +430,12 @@ module rpu_texture #(
     .valid_o, .q_o({pr1_o, pr2_o, pr3_o, covers_o, t_o, x_o, ovf_o, tag_o}));
 
   wire unused_bits = ^w_unused;
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(LatOwn), .Segments(2),
+                     .Name("rpu_texture (without its guide pair and curve point)")) u_latency_check (
+    .clk_i, .rst_ni, .in_i({valid_i, cp_valid}), .out_i({ch_valid, valid_o}));
+`endif
 endmodule
 
 `default_nettype wire

@@ -231,6 +231,11 @@ module rpu_ray_gen #(
     .clk_i, .rst_ni, .valid_i(m3_valid),
     .d_i({c3[SbV +: 3*VW], o_vhat, o_el, o_er, o_et, o_eb, c3[SbTag +: TagW]}),
     .valid_o, .q_o({v_o, vhat_o, e_left_o, e_right_o, e_top_o, e_bottom_o, tag_o}));
+`ifndef SYNTHESIS
+  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
+  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_ray_gen")) u_latency_check (
+    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
+`endif
 endmodule
 
 `default_nettype wire
