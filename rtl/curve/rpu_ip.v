@@ -183,9 +183,12 @@ module rpu_ip #(
     .clk_i, .rst_ni, .valid_i(valid_h), .d_i({in0, in1, fs0, pc0, fg_h, bun_h}),
     .valid_o(valid_s), .q_o({in_s, side_s}));
   localparam integer Fo0 = `RPU_MDFRAC(N1, 0);
-  `define RPU_CAND_IN(V) .x_i(V[InW-1 -: CXW]), .y_i(V[InW-CXW-1 -: CXW]), \
-    .t_i(V[InW-2*CXW-1 -: CTW]), .c2t_i(V[InW-2*CXW-CTW-1 -: CTW]), \
-    .s2t_i(V[InW-2*CXW-2*CTW-1 -: CTW]), .w_i(V[2*CAW +: CWW]), .a_i(V[0 +: 2*CAW])
+  // a candidate input's fields, LSB first: a, w, s2t, c2t, t, y, x
+  localparam integer oCw = 2*CAW, oCs2 = oCw + CWW, oCc2 = oCs2 + CTW, oCt = oCc2 + CTW;
+  localparam integer oCy = oCt + CTW, oCx = oCy + CXW;
+  `define RPU_CAND_IN(V) .x_i(V[oCx +: CXW]), .y_i(V[oCy +: CXW]), \
+    .t_i(V[oCt +: CTW]), .c2t_i(V[oCc2 +: CTW]), \
+    .s2t_i(V[oCs2 +: CTW]), .w_i(V[oCw +: CWW]), .a_i(V[0 +: 2*CAW])
   wire [InW-1:0]   ci0 = in_s[InW +: InW], ci1 = in_s[0 +: InW];
   wire [2*FgdW-1:0] fg_s = side_s[BunW +: 2*FgdW];
   wire             s_valid, s_ovf0, s_ovf1, s_v1_unused, s_t1_unused;
@@ -244,7 +247,8 @@ module rpu_ip #(
       wire [CarW-1:0] last = car[K*CarW +: CarW];
       assign tp_valid = v[K];
       assign tp_tau   = last[CarW-1 -: N];
-      assign tp_mds   = last[CarW-N-1 -: 2*MdW];
+      localparam integer oMds = CarW - N - 2*MdW;  // below τ
+      assign tp_mds   = last[oMds +: 2*MdW];
       assign tp_bun   = bun[K*BunW +: BunW];
       wire unused_last = ^last[0 +: FsW + PcW + 2*FgdW];
     end else begin : g_iterative

@@ -175,7 +175,7 @@ module rpu_ip_step #(
       end
       // floors and saturations: x = floor(X/2^N), t = floor(T/2^(FT+N−FP)), c2t = floor(C2 /
       // 2^(FC+FT+N−FP)), w = floor(W/2^2N), a = floor(A/2^2N)
-      wire [XSW-1:0] lx = lin_2[LinW-1 -: XSW], ly = lin_2[LinW-XSW-1 -: XSW];
+      wire [XSW-1:0] lx = lin_2[XSW + TSW + 2*CSW +: XSW], ly = lin_2[TSW + 2*CSW +: XSW];
       wire [TSW-1:0] lt = lin_2[2*CSW +: TSW];
       wire [CSW-1:0] lc = lin_2[CSW +: CSW], ls = lin_2[0 +: CSW];
       wire [WSW-1:0] lw = q_2[2*ASW +: WSW];
@@ -225,12 +225,14 @@ module rpu_ip_step #(
   wire [J-2:0]         c_ovf;
   wire [SbW:0]         sb_out;   // {in-sat, side band}
   wire [J-2:0]         c_isat;   // a candidate input saturated
+  localparam integer oIs = 1 + 2*CAW + CWW, oIy = oIs + 3*CTW;  // s2t's and y's offsets in ci
   generate
     for (j = 1; j < J; j = j + 1) begin : g_cand
       wire [InW-1:0] ci = cin[(j-1)*InW +: InW];
-      wire [XW-1:0]  cx = ci[InW-1 -: XW], cy = ci[InW-XW-1 -: XW];
-      wire [CTW-1:0] ct = ci[InW-2*XW-1 -: CTW], cc = ci[InW-2*XW-CTW-1 -: CTW];
-      wire [CTW-1:0] cs = ci[InW-2*XW-2*CTW-1 -: CTW];
+      // fields, LSB first: the sat flag, a, w, s2t, c2t, t, y, x
+      wire [XW-1:0]  cx = ci[oIy + XW +: XW], cy = ci[oIy +: XW];
+      wire [CTW-1:0] ct = ci[oIs + 2*CTW +: CTW], cc = ci[oIs + CTW +: CTW];
+      wire [CTW-1:0] cs = ci[oIs +: CTW];
       wire [CWW-1:0] cw = ci[2*CAW+1 +: CWW];
       wire [2*CAW-1:0] ca = ci[1 +: 2*CAW];
       if (j == 1) begin : g_carry
@@ -345,7 +347,8 @@ module rpu_ip_step #(
     .valid_o(valid_h), .q_o({eta_h, mds_h, ovf_h, sb_h}));
 
   // ---- the state moved by η: two stages (the terms, then the sums) ----
-  wire [7:0]     sh_h = sb_h[SbW-KW-1 -: 8];
+  localparam integer oSh = SbW - KW - 8;  // the shift, below k
+  wire [7:0]     sh_h = sb_h[oSh +: 8];
   wire [StW-1:0] st_h = sb_h[oSt +: StW];
   localparam integer oFs = PcW + FgW + CtxW + TagW, oPc = FgW + CtxW + TagW;
   wire [FsW-1:0] fs_h = sb_h[oFs +: FsW];
