@@ -58,9 +58,9 @@ module rpu_frame #(
   end
 
   // ---- stage 0: A − p1, 1 − α, 1 − 2α; the descriptor's fields ----
-  wire [3*EW-1:0] e1 = fr_i[FrW-1 -: 3*EW];
-  wire [3*EW-1:0] e2 = fr_i[FrW-3*EW-1 -: 3*EW];
   localparam integer RestW = SW + 2*CW2 + 2*AW;  // {s, c2, s2, a1, a2}
+  wire [3*EW-1:0] e1 = fr_i[RestW + 3*EW +: 3*EW];
+  wire [3*EW-1:0] e2 = fr_i[RestW +: 3*EW];
   wire [RestW-1:0] rest = fr_i[RestW-1:0];
   wire [3*DW-1:0] ap;
   genvar c;
@@ -117,14 +117,17 @@ module rpu_frame #(
     .a_i({be_w, be_w, al_w}), .b_i({be_w, om2_0, om1_0}), .tag_i(1'b0),
     .valid_o(vw_unused), .p_o(pw), .tag_o(tw_unused));
 
-  // ---- stage 1: the four dot products; W's coefficients (constant shifts) ----
+  // ---- stage 1: the four dot products' first two terms; W's coefficients (constant shifts) ----
+  // (a three-term sum right after the products becomes a chain of three cascaded DSP post-adders,
+  // 4.1 ns; two terms per stage stay within the budget)
   localparam integer DotW = PE + 2;
-  wire [4*DotW-1:0] dots;
+  wire [4*(PE+1)-1:0] d01;
+  wire [4*PE-1:0]     d2;
   generate
     for (c = 0; c < 4; c = c + 1) begin : g_dot  // x0, y0, x1, y1 (lanes 3c .. 3c+2)
       wire signed [PE-1:0] q0 = pe[(3*c)*PE +: PE], q1 = pe[(3*c+1)*PE +: PE];
-      wire signed [PE-1:0] q2 = pe[(3*c+2)*PE +: PE];
-      assign dots[c*DotW +: DotW] = {{2{q0[PE-1]}}, q0} + {{2{q1[PE-1]}}, q1} + {{2{q2[PE-1]}}, q2};
+      assign d01[c*(PE+1) +: PE+1] = {q0[PE-1], q0} + {q1[PE-1], q1};
+      assign d2[c*PE +: PE]        = pe[(3*c+2)*PE +: PE];
     end
   endgenerate
   // floor(v · 2^k) for a constant k of either sign, to a width Wout (the value fits).
@@ -136,16 +139,17 @@ module rpu_frame #(
   wire [127:0] w1x = shift_const({{(128-PWW){pw1[PWW-1]}}, pw1}, FW + N - 2*TFrac);
   wire [127:0] w2x = shift_const(-{{(128-PWW){pw2[PWW-1]}}, pw2}, FW - 2*TFrac);
   wire             valid_2;
-  wire [4*DotW-1:0] dots_2;
+  wire [4*(PE+1)-1:0] d01_2;
+  wire [4*PE-1:0]  d2_2;
   wire [4*PC-1:0]  pc_2;
   wire [W0W-1:0]   w0_2;
   wire [W1W-1:0]   w1_2;
   wire [W2W-1:0]   w2_2;
   wire [Ctx1W-1:0] ctx_2;
-  rpu_stage #(.W(4*DotW + 4*PC + W0W + W1W + W2W + Ctx1W)) u_s1 (
+  rpu_stage #(.W(4*(PE+1) + 4*PE + 4*PC + W0W + W1W + W2W + Ctx1W)) u_s1 (
     .clk_i, .rst_ni, .valid_i(valid_1),
-    .d_i({dots, pc, w0x[W0W-1:0], w1x[W1W-1:0], w2x[W2W-1:0], ctx_1}),
-    .valid_o(valid_2), .q_o({dots_2, pc_2, w0_2, w1_2, w2_2, ctx_2}));
+    .d_i({d01, d2, pc, w0x[W0W-1:0], w1x[W1W-1:0], w2x[W2W-1:0], ctx_1}),
+    .valid_o(valid_2), .q_o({d01_2, d2_2, pc_2, w0_2, w1_2, w2_2, ctx_2}));
   wire [SW-1:0]   s_2;
   wire [2*AW-1:0] fa_2;
   wire [TW-1:0]   al_2, be_2;
@@ -164,7 +168,6 @@ module rpu_frame #(
   wire [WA-1:0] w0a = w0f[WA-1:0];
   wire [WA-1:0] w1a = {{(WA-A1W){w1f[W1W-1]}}, w1f[A1W-1:0]};
   wire [WA-1:0] w2a = {{(WA-A2W){w2f[W2W-1]}}, w2f[A2W-1:0]};
-  localparam integer LF = `RPU_MUL_LAT(AW, WA, 1);
   localparam integer PF = AW + WA;
   // The coefficients that only wait ride in the flat products' tag.
   localparam integer WaitW = 4*PC + W0W + W1W + W2W + 2*TW + TagW;
@@ -172,11 +175,55 @@ module rpu_frame #(
   wire [6*PF-1:0]   pf;
   wire [WaitW-1:0]  wait_f;
   wire [AW-1:0] fa1 = fa_2[AW +: AW], fa2 = fa_2[0 +: AW];
-  rpu_mul_vec #(.Count(6), .AW(AW), .BW(WA), .Signed(1), .TagW(WaitW), .Latency(LF)) u_pf (
-    .clk_i, .rst_ni, .valid_i(valid_2),
-    .a_i({fa2, fa2, fa2, fa1, fa1, fa1}), .b_i({w2a, w1a, w0a, w2a, w1a, w0a}),
-    .tag_i({pc_2, w0_2, w1_2, w2_2, al_2, be_2, tag_2}),
-    .valid_o(valid_f), .p_o(pf), .tag_o(wait_f));
+  wire [6*AW-1:0] fa_l = {fa2, fa2, fa2, fa1, fa1, fa1};
+  wire [6*WA-1:0] wa_l = {w2a, w1a, w0a, w2a, w1a, w0a};
+  wire [WaitW-1:0] wait_2 = {pc_2, w0_2, w1_2, w2_2, al_2, be_2, tag_2};
+  // A w wider than two tiles is split, w = wh·2^WL + wl (wl unsigned): a·wl and a·wh (two tiles
+  // each, one adder level), then one registered sum. The same tiles as one a × w product, but no
+  // adder chain longer than about 45 bits after a DSP (one 4-tile tree level is a 57-bit chain
+  // at n = 16, over the 4 ns budget).
+  localparam integer WL = 34;            // two 17-bit tiles
+  localparam integer Split = WA > WL + 2 ? 1 : 0;
+  localparam integer LF = Split != 0 ? 4 : `RPU_MUL_LAT(AW, WA, 1);
+  generate
+    if (Split != 0) begin : g_split
+      localparam integer WH = WA - WL;   // wh, signed
+      localparam integer PL = AW + WL + 1, PH = AW + WH;
+      wire [6*(WL+1)-1:0] wl_l;
+      wire [6*WH-1:0]     wh_l;
+      for (c = 0; c < 6; c = c + 1) begin : g_cut
+        assign wl_l[c*(WL+1) +: WL+1] = {1'b0, wa_l[c*WA +: WL]};
+        assign wh_l[c*WH +: WH]       = wa_l[c*WA + WL +: WH];
+      end
+      wire             valid_l;
+      wire [6*PL-1:0]  pl;
+      wire [6*PH-1:0]  ph;
+      wire [WaitW-1:0] wait_l;
+      wire             vh_unused;
+      wire             th_unused;
+      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WL + 1), .Signed(1), .TagW(WaitW), .Latency(3)) u_pfl (
+        .clk_i, .rst_ni, .valid_i(valid_2), .a_i(fa_l), .b_i(wl_l), .tag_i(wait_2),
+        .valid_o(valid_l), .p_o(pl), .tag_o(wait_l));
+      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WH), .Signed(1), .TagW(1), .Latency(3)) u_pfh (
+        .clk_i, .rst_ni, .valid_i(valid_2), .a_i(fa_l), .b_i(wh_l), .tag_i(1'b0),
+        .valid_o(vh_unused), .p_o(ph), .tag_o(th_unused));
+      wire [6*PF-1:0] sum;
+      for (c = 0; c < 6; c = c + 1) begin : g_sum
+        wire signed [PL-1:0] l = pl[c*PL +: PL];
+        wire signed [PH-1:0] h = ph[c*PH +: PH];
+        wire [PF-1:0] lx = {{(PF-PL){l[PL-1]}}, l};
+        wire [PF-1:0] hx = {h, {WL{1'b0}}};  // PH + WL = PF
+        assign sum[c*PF +: PF] = lx + hx;
+      end
+      rpu_stage #(.W(6*PF + WaitW)) u_pfs (
+        .clk_i, .rst_ni, .valid_i(valid_l), .d_i({sum, wait_l}),
+        .valid_o(valid_f), .q_o({pf, wait_f}));
+    end else begin : g_whole
+      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WA), .Signed(1), .TagW(WaitW), .Latency(LF)) u_pf (
+        .clk_i, .rst_ni, .valid_i(valid_2), .a_i(fa_l), .b_i(wa_l), .tag_i(wait_2),
+        .valid_o(valid_f), .p_o(pf), .tag_o(wait_f));
+    end
+  endgenerate
   // Lane 3k + i: a_(k+1) · w_i; each floored by 2^FA to its width.
   wire [2*(A0W+A1W+A2W)-1:0] fa_f;
   generate
@@ -190,12 +237,28 @@ module rpu_frame #(
     end
   endgenerate
 
+  // ---- stage 2: the dot products' third term ----
+  wire [4*DotW-1:0] dots;
+  generate
+    for (c = 0; c < 4; c = c + 1) begin : g_dot2
+      wire signed [PE:0]   p01 = d01_2[c*(PE+1) +: PE+1];
+      wire signed [PE-1:0] q2  = d2_2[c*PE +: PE];
+      assign dots[c*DotW +: DotW] = {p01[PE], p01} + {{2{q2[PE-1]}}, q2};
+    end
+  endgenerate
+  wire              valid_3;
+  wire [4*DotW-1:0] dots_2;
+  wire [SW-1:0]     s_3;
+  rpu_stage #(.W(4*DotW + SW)) u_s2 (
+    .clk_i, .rst_ni, .valid_i(valid_2), .d_i({dots, s_2}),
+    .valid_o(valid_3), .q_o({dots_2, s_3}));
+
   // ---- x0, y0, x1, y1: floor(dot / 2^(s − FX)) = floor(dot·2^8 / 2^(s − 16)), two shift
   //      stages (multiples of 8, then 0..7), then the saturation ----
   localparam integer VW = DotW + 8;
   localparam integer ShBaseI = FX - 8;
   localparam [SW-1:0] ShBase = ShBaseI[SW-1:0];
-  wire [SW-1:0] sh = s_2 - ShBase;
+  wire [SW-1:0] sh = s_3 - ShBase;
   wire [4*VW-1:0]  va;
   generate
     for (c = 0; c < 4; c = c + 1) begin : g_coarse
@@ -203,12 +266,12 @@ module rpu_frame #(
       assign va[c*VW +: VW] = v >>> {sh[SW-1:3], 3'b000};
     end
   endgenerate
-  // (the coarse stage's input comes straight from stage 1's registers)
+  // (the coarse stage's input comes straight from stage 2's registers)
   wire             valid_b;
   wire [4*VW-1:0]  va_b;
   wire [2:0]       sh_b;
   rpu_stage #(.W(4*VW + 3)) u_sa (
-    .clk_i, .rst_ni, .valid_i(valid_2), .d_i({va, sh[2:0]}),
+    .clk_i, .rst_ni, .valid_i(valid_3), .d_i({va, sh[2:0]}),
     .valid_o(valid_b), .q_o({va_b, sh_b}));
   wire [4*VW-1:0] vb;
   generate
@@ -233,9 +296,9 @@ module rpu_frame #(
       assign xy_c[Pos*XW +: XW] = v > XMax ? XMax[XW-1:0] : v < XMin ? XMin[XW-1:0] : v[XW-1:0];
     end
   endgenerate
-  // Wait for the flat products: LF − 2 more cycles (the last one a flip-flop).
+  // Wait for the flat products: LF − 3 more cycles (the last one a flip-flop).
   wire [4*XW:0] xy_d;
-  rpu_delay #(.W(4*XW + 1), .D(LF - 2)) u_xy_wait (
+  rpu_delay #(.W(4*XW + 1), .D(LF - 3)) u_xy_wait (
     .clk_i, .valid_i(valid_c), .d_i({xy_c, |sat_c}), .d_o(xy_d));
   wire unused_valid = valid_c;
 
