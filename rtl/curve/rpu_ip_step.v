@@ -11,7 +11,7 @@
 // Step = k wired in (unrolled pipeline), or Step = 0: k comes with the item (iterative form:
 // variable shifts, rpu_candidate with Fo = 0). The state, constants and context ride in
 // candidate 1's tag. Fixed latency: three input stages, the candidate's, the pair sums, the
-// compares and η, the moved state (two stages).
+// compares and η, the η multiples, the moved state (two stages).
 `default_nettype none
 `include "rpu_widths.vh"
 
@@ -96,12 +96,20 @@ module rpu_ip_step #(
         if (((c >> b) & 1) != 0) cmul = cmul + (q << b);
     end
   endfunction
+  // q·e for a run-time e < 2^16 (η, η²): the partial products summed in a balanced tree, so
+  // an e of b set-able bits costs ceil(log2 b) adder levels, not b − 1 (zero bits fold away).
   function automatic [127:0] vmul(input [127:0] q, input [15:0] e);
-    integer b;
+    reg [127:0] p0, p1, p2, p3, p4, p5, p6, p7;
     begin
-      vmul = 128'd0;
-      for (b = 0; b < 16; b = b + 1)
-        if (e[b]) vmul = vmul + (q << b);
+      p0 = (e[0] ? q : 128'd0) + (e[1] ? q << 1 : 128'd0);
+      p1 = (e[2] ? q << 2 : 128'd0) + (e[3] ? q << 3 : 128'd0);
+      p2 = (e[4] ? q << 4 : 128'd0) + (e[5] ? q << 5 : 128'd0);
+      p3 = (e[6] ? q << 6 : 128'd0) + (e[7] ? q << 7 : 128'd0);
+      p4 = (e[8] ? q << 8 : 128'd0) + (e[9] ? q << 9 : 128'd0);
+      p5 = (e[10] ? q << 10 : 128'd0) + (e[11] ? q << 11 : 128'd0);
+      p6 = (e[12] ? q << 12 : 128'd0) + (e[13] ? q << 13 : 128'd0);
+      p7 = (e[14] ? q << 14 : 128'd0) + (e[15] ? q << 15 : 128'd0);
+      vmul = ((p0 + p1) + (p2 + p3)) + ((p4 + p5) + (p6 + p7));
     end
   endfunction
 `include "rpu_frame_fn.vh"
@@ -342,20 +350,21 @@ module rpu_ip_step #(
   wire [2*MdW-1:0] mds_h;
   wire             ovf_h;
   wire [SbW-1:0]   sb_h;
-  rpu_stage #(.W(N1 + 2*MdW + 1 + SbW)) u_eta (
+  // (Hold: flip-flops, so the η multiples below do not start at the slow output of the
+  // shift-register LUTs the side band's delay line becomes)
+  rpu_stage #(.W(N1 + 2*MdW + 1 + SbW), .Hold(1)) u_eta (
     .clk_i, .rst_ni, .valid_i(valid_r), .d_i({eta, lo_md_n, hi_md_n, ovf_r, sb_r}),
     .valid_o(valid_h), .q_o({eta_h, mds_h, ovf_h, sb_h}));
 
-  // ---- the state moved by η: two stages (the terms, then the sums) ----
+  // ---- the state moved by η: three stages (the multiples of η and η², the shifted terms, the
+  //      sums) ----
   localparam integer oSh = SbW - KW - 8;  // the shift, below k
-  wire [7:0]     sh_h = sb_h[oSh +: 8];
   wire [StW-1:0] st_h = sb_h[oSt +: StW];
   localparam integer oFs = PcW + FgW + CtxW + TagW, oPc = FgW + CtxW + TagW;
   wire [FsW-1:0] fs_h = sb_h[oFs +: FsW];
   wire [PcW-1:0] pc_h = sb_h[oPc +: PcW];
   wire [15:0] e1 = {{(16-N1){1'b0}}, eta_h};
   wire [15:0] e2 = e1 * e1;
-  wire [15:0] e2x = e1 << 1;
   wire [XW-1:0]  hpx1 = pc_h[pX1 +: XW], hpy1 = pc_h[pY1 +: XW];
   wire [TW-1:0]  hpbe = pc_h[pB +: TW];
   wire [CaW-1:0] hpc2b = pc_h[pC2B +: CaW], hps2b = pc_h[pS2B +: CaW];
@@ -367,21 +376,56 @@ module rpu_ip_step #(
   wire [127:0] hc2b = `RPU_SX(hpc2b, CaW), hs2b = `RPU_SX(hps2b, CaW), hw2 = `RPU_SX(hpw2, W2W);
   wire [127:0] ha12 = `RPU_SX(hpa12, A2W), ha22 = `RPU_SX(hpa22, A2W);
   wire [127:0] hSW = `RPU_SX(hfSW, SSW), hSA1 = `RPU_SX(hfSA1, SAW), hSA2 = `RPU_SX(hfSA2, SAW);
-  // Terms of the move, in the fields' order and widths.
-  wire [127:0] tX = vmul(hx1, e1) << sh_h, tY = vmul(hy1, e1) << sh_h, tT = vmul(hbe, e1) << sh_h;
-  wire [127:0] tC = vmul(hc2b, e1) << sh_h, tS = vmul(hs2b, e1) << sh_h;
-  wire [127:0] tW = (vmul(hSW, e1) << sh_h) + (vmul(hw2, e2) << {sh_h, 1'b0});
-  wire [127:0] tSW = vmul(hw2, e2x) << sh_h;
-  wire [127:0] tA1 = (vmul(hSA1, e1) << sh_h) + (vmul(ha12, e2) << {sh_h, 1'b0});
-  wire [127:0] tSA1 = vmul(ha12, e2x) << sh_h;
-  wire [127:0] tA2 = (vmul(hSA2, e1) << sh_h) + (vmul(ha22, e2) << {sh_h, 1'b0});
-  wire [127:0] tSA2 = vmul(ha22, e2x) << sh_h;
+  // The multiples, each kept to the width of the field it moves (the shifts below only move
+  // bits up, and every field wraps within its width).
+  wire [127:0] mX = vmul(hx1, e1), mY = vmul(hy1, e1), mT = vmul(hbe, e1);
+  wire [127:0] mC = vmul(hc2b, e1), mS = vmul(hs2b, e1);
+  wire [127:0] mSW = vmul(hSW, e1), mW2 = vmul(hw2, e2), mW1 = vmul(hw2, e1);
+  wire [127:0] mSA1 = vmul(hSA1, e1), mA12 = vmul(ha12, e2), mA11 = vmul(ha12, e1);
+  wire [127:0] mSA2 = vmul(hSA2, e1), mA22 = vmul(ha22, e2), mA21 = vmul(ha22, e1);
+  localparam integer MW = 2*XSW + TSW + 2*CSW + 2*WSW + SSW + 2*(2*ASW + SAW);
+  wire [MW-1:0] mult = {mX[XSW-1:0], mY[XSW-1:0], mT[TSW-1:0], mC[CSW-1:0], mS[CSW-1:0],
+                        mSW[WSW-1:0], mW2[WSW-1:0], mW1[SSW-1:0],
+                        mSA1[ASW-1:0], mA12[ASW-1:0], mA11[SAW-1:0],
+                        mSA2[ASW-1:0], mA22[ASW-1:0], mA21[SAW-1:0]};
+  // τ' = τ + η·D (the bits η lands on are zero in τ)
+  wire [7:0]   sh_h = sb_h[oSh +: 8];
+  wire [N-1:0] tau_h = st_h[StW-1 -: N];
+  wire [N+15:0] tau_n = {16'd0, tau_h} + ({{N{1'b0}}, e1} << sh_h);
+  wire             valid_p;
+  wire [MW-1:0]    mult_p;
+  wire [N-1:0]     tau_p;
+  wire [2*MdW-1:0] mds_p;
+  wire             ovf_p;
+  wire [SbW-1:0]   sb_p;
+  rpu_stage #(.W(MW + N + 2*MdW + 1 + SbW)) u_mult (
+    .clk_i, .rst_ni, .valid_i(valid_h), .d_i({mult, tau_n[N-1:0], mds_h, ovf_h, sb_h}),
+    .valid_o(valid_p), .q_o({mult_p, tau_p, mds_p, ovf_p, sb_p}));
+  // Terms of the move, in the fields' order and widths: a multiple times D = 2^sh, η² ones
+  // times D².
+  wire [7:0] sh_p = sb_p[oSh +: 8];
+  wire [XSW-1:0] uX, uY;
+  wire [TSW-1:0] uT;
+  wire [CSW-1:0] uC, uS;
+  wire [WSW-1:0] uSW, uW2;
+  wire [SSW-1:0] uW1;
+  wire [ASW-1:0] uSA1, uA12, uSA2, uA22;
+  wire [SAW-1:0] uA11, uA21;
+  assign {uX, uY, uT, uC, uS, uSW, uW2, uW1, uSA1, uA12, uA11, uSA2, uA22, uA21} = mult_p;
+  `define RPU_ZX(v, w) {{(128-(w)){1'b0}}, v}
+  wire [127:0] tX = `RPU_ZX(uX, XSW) << sh_p, tY = `RPU_ZX(uY, XSW) << sh_p;
+  wire [127:0] tT = `RPU_ZX(uT, TSW) << sh_p;
+  wire [127:0] tC = `RPU_ZX(uC, CSW) << sh_p, tS = `RPU_ZX(uS, CSW) << sh_p;
+  wire [127:0] tW = (`RPU_ZX(uSW, WSW) << sh_p) + (`RPU_ZX(uW2, WSW) << {sh_p, 1'b0});
+  wire [127:0] tSW = `RPU_ZX(uW1, SSW) << (sh_p + 8'd1);
+  wire [127:0] tA1 = (`RPU_ZX(uSA1, ASW) << sh_p) + (`RPU_ZX(uA12, ASW) << {sh_p, 1'b0});
+  wire [127:0] tSA1 = `RPU_ZX(uA11, SAW) << (sh_p + 8'd1);
+  wire [127:0] tA2 = (`RPU_ZX(uSA2, ASW) << sh_p) + (`RPU_ZX(uA22, ASW) << {sh_p, 1'b0});
+  wire [127:0] tSA2 = `RPU_ZX(uA21, SAW) << (sh_p + 8'd1);
+  `undef RPU_ZX
   wire [FsW-1:0] terms = {tX[XSW-1:0], tY[XSW-1:0], tT[TSW-1:0], tC[CSW-1:0], tS[CSW-1:0],
                           tW[WSW-1:0], tSW[SSW-1:0], tA1[ASW-1:0], tSA1[SAW-1:0], tA2[ASW-1:0],
                           tSA2[SAW-1:0]};
-  // τ' = τ + η·D (the bits η lands on are zero in τ)
-  wire [N-1:0] tau_h = st_h[StW-1 -: N];
-  wire [N+15:0] tau_n = {16'd0, tau_h} + ({{N{1'b0}}, e1} << sh_h);
   wire             valid_m;
   wire [FsW-1:0]   terms_m;
   wire [N-1:0]     tau_m;
@@ -389,7 +433,7 @@ module rpu_ip_step #(
   wire             ovf_m;
   wire [SbW-1:0]   sb_m;
   rpu_stage #(.W(FsW + N + 2*MdW + 1 + SbW)) u_terms (
-    .clk_i, .rst_ni, .valid_i(valid_h), .d_i({terms, tau_n[N-1:0], mds_h, ovf_h, sb_h}),
+    .clk_i, .rst_ni, .valid_i(valid_p), .d_i({terms, tau_p, mds_p, ovf_p, sb_p}),
     .valid_o(valid_m), .q_o({terms_m, tau_m, mds_m, ovf_m, sb_m}));
   wire [FsW-1:0] fs_m = sb_m[oFs +: FsW];
   // Field-wise sums (each field wraps within its own width; the values fit).
@@ -414,8 +458,9 @@ module rpu_ip_step #(
     .valid_o, .q_o({k_o, state_o, fs_o, pc_o, fg_o, ovf_o, ctx_o, tag_o}));
 
   wire unused = ^{c_valid[J-2:0], st_r[StW-1 -: N], st_c[StW-1 -: N], fs_h, sb_c, tau_n[N+15:N],
-                  e2[15:0], tX, tY, tT,
-                  tC, tS, tW, tSW, tA1, tSA1, tA2, tSA2, hx1, st_h[2*MdW-1:0], sb_m};
+                  e2[15:0], mX, mY, mT, mC, mS, mSW, mW2, mW1, mSA1, mA12, mA11, mSA2, mA22,
+                  mA21, tX, tY, tT, tC, tS, tW, tSW, tA1, tSA1, tA2, tSA2, hx1, st_h[2*MdW-1:0],
+                  sb_m, sb_p};
 `undef RPU_SX
 endmodule
 
