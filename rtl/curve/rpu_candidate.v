@@ -75,8 +75,14 @@ module rpu_candidate #(
   wire [FP+1:0] s2_c = s2_s < MinusOne ? MinusOne[FP+1:0] : s2_s > One ? One[FP+1:0] : s2_s[FP+1:0];
   wire signed [WW-1:0] w_s = w_i;
   localparam signed [WW-1:0] Quarter = 1 <<< (FW - 2);
-  wire [FW-2:0]  w_c  = w_s < 0 ? {(FW-1){1'b0}} : w_s > Quarter ? Quarter[FW-2:0] : w_s[FW-2:0];
-  wire [RadW-1:0] wsh = {{(RadW+1-2*FG){1'b0}}, w_c, {(2*FG-FW){1'b0}}};
+  // The radicands η² + w'·2^(2FG−FW) for the three cases of the clamp, summed in parallel with
+  // the compares and then selected (one adder after the clamp's compare would be 4.06 ns).
+  wire w_neg = w_s < 0, w_big = w_s > Quarter;
+  wire [RadW-1:0] wsh = {{(RadW+1-2*FG){1'b0}}, w_s[FW-2:0], {(2*FG-FW){1'b0}}};
+  localparam [RadW-1:0] QSh = {{(RadW+1-2*FG){1'b0}}, Quarter[FW-2:0], {(2*FG-FW){1'b0}}};
+  wire [RadW-1:0] ra1 = ee1 + wsh, rq1 = ee1 + QSh, ra2 = ee2 + wsh, rq2 = ee2 + QSh;
+  wire [RadW-1:0] rad1 = w_neg ? ee1 : w_big ? rq1 : ra1;
+  wire [RadW-1:0] rad2 = w_neg ? ee2 : w_big ? rq2 : ra2;
   wire signed [AW-1:0] a1_s = a_i[0 +: AW], a2_s = a_i[AW +: AW];
   localparam signed [AW-1:0] GMax = (1 <<< FG) - 1;
   wire [GW-1:0] fl1 = a1_s < 0 ? {GW{1'b0}} : a1_s > GMax ? GMax[GW-1:0] : a1_s[GW-1:0];
@@ -88,7 +94,7 @@ module rpu_candidate #(
   wire [CtxW-1:0]     ctx_1;
   rpu_stage #(.W(2*RadW + CtxW)) u_s1 (
     .clk_i, .rst_ni, .valid_i,
-    .d_i({ee1 + wsh, ee2 + wsh, x_i, y_i, t_c, c2_c, s2_c, fl1, fl2, mode1, mode2, eta1, eta2,
+    .d_i({rad1, rad2, x_i, y_i, t_c, c2_c, s2_c, fl1, fl2, mode1, mode2, eta1, eta2,
           itag_i}),
     .valid_o(valid_1), .q_o({r1_1, r2_1, ctx_1}));
 
