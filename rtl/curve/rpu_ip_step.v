@@ -223,8 +223,16 @@ module rpu_ip_step #(
   rpu_stage #(.W(SbW + 5)) u_i3 (.clk_i, .rst_ni, .valid_i(valid_2), .d_i(sbf_2),
                                   .valid_o(valid_3), .q_o(sbf_3));
   assign sb_3 = sbf_3[SbW+4 -: SbW];
-  wire [4:0] fo_3 = sbf_3[4:0];
-  wire [FgW-1:0] fg_3 = sb_3[CtxW+TagW +: FgW];
+  // The guides and Fo, which the candidates' first stage adds and shifts with, again in a held
+  // stage of flip-flops beside u_i3: not from the slow output of the shift-register LUTs the side
+  // band's delay line becomes (4.06 ns).
+  localparam integer oFg2 = 5 + CtxW + TagW;  // the guides' offset in sbf_2
+  wire           valid_3h_unused;
+  wire [4:0]     fo_3;
+  wire [FgW-1:0] fg_3;
+  rpu_stage #(.W(FgW + 5), .Hold(1)) u_i3g (
+    .clk_i, .rst_ni, .valid_i(valid_2), .d_i({sbf_2[oFg2 +: FgW], sbf_2[4:0]}),
+    .valid_o(valid_3h_unused), .q_o({fg_3, fo_3}));
 
   // ---- the candidates ----
   localparam integer FoP = Step == 0 ? 0 : `RPU_MDFRAC(N1, Step);
@@ -457,7 +465,8 @@ module rpu_ip_step #(
           sb_m[0 +: CtxW+TagW]}),
     .valid_o, .q_o({k_o, state_o, fs_o, pc_o, fg_o, ovf_o, ctx_o, tag_o}));
 
-  wire unused = ^{c_valid[J-2:0], st_r[StW-1 -: N], st_c[StW-1 -: N], fs_h, sb_c, tau_n[N+15:N],
+  wire unused = ^{c_valid[J-2:0], sbf_3[4:0], valid_3h_unused, st_r[StW-1 -: N],
+                  st_c[StW-1 -: N], fs_h, sb_c, tau_n[N+15:N],
                   e2[15:0], mX, mY, mT, mC, mS, mSW, mW2, mW1, mSA1, mA12, mA11, mSA2, mA22,
                   mA21, tX, tY, tT, tC, tS, tW, tSW, tA1, tSA1, tA2, tSA2, hx1, st_h[2*MdW-1:0],
                   sb_m, sb_p};
