@@ -353,16 +353,19 @@ module rpu_ip_step #(
         hi_md_n = hi_md_n | md[e+1];
       end
   end
+  wire [15:0]      eta_w = {{(16-N1){1'b0}}, eta};
+  wire [15:0]      eta_sq = eta_w * eta_w;  // η² (< 2^16), registered with η
   wire             valid_h;
   wire [N1-1:0]    eta_h;
+  wire [15:0]      eta_sq_h;
   wire [2*MdW-1:0] mds_h;
   wire             ovf_h;
   wire [SbW-1:0]   sb_h;
   // (Hold: flip-flops, so the η multiples below do not start at the slow output of the
   // shift-register LUTs the side band's delay line becomes)
-  rpu_stage #(.W(N1 + 2*MdW + 1 + SbW), .Hold(1)) u_eta (
-    .clk_i, .rst_ni, .valid_i(valid_r), .d_i({eta, lo_md_n, hi_md_n, ovf_r, sb_r}),
-    .valid_o(valid_h), .q_o({eta_h, mds_h, ovf_h, sb_h}));
+  rpu_stage #(.W(N1 + 16 + 2*MdW + 1 + SbW), .Hold(1)) u_eta (
+    .clk_i, .rst_ni, .valid_i(valid_r), .d_i({eta, eta_sq, lo_md_n, hi_md_n, ovf_r, sb_r}),
+    .valid_o(valid_h), .q_o({eta_h, eta_sq_h, mds_h, ovf_h, sb_h}));
 
   // ---- the state moved by η: three stages (the multiples of η and η², the shifted terms, the
   //      sums) ----
@@ -372,7 +375,7 @@ module rpu_ip_step #(
   wire [FsW-1:0] fs_h = sb_h[oFs +: FsW];
   wire [PcW-1:0] pc_h = sb_h[oPc +: PcW];
   wire [15:0] e1 = {{(16-N1){1'b0}}, eta_h};
-  wire [15:0] e2 = e1 * e1;
+  wire [15:0] e2 = eta_sq_h;
   wire [XW-1:0]  hpx1 = pc_h[pX1 +: XW], hpy1 = pc_h[pY1 +: XW];
   wire [TW-1:0]  hpbe = pc_h[pB +: TW];
   wire [CaW-1:0] hpc2b = pc_h[pC2B +: CaW], hps2b = pc_h[pS2B +: CaW];
