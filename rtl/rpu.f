@@ -34,7 +34,9 @@ curve/rpu_chord.v
 curve/rpu_sphere.v
 curve/rpu_guide_pair.v
 curve/rpu_curve_point.v
+curve/rpu_frame.v
 curve/rpu_candidate.v
+curve/rpu_test_point.v
 curve/rpu_ip_step.v
 curve/rpu_ip.v
 curve/rpu_capture.v
@@ -42,6 +44,7 @@ curve/rpu_capture.v
 // header: curve/rpu_guide_shape.vh
 // header: curve/rpu_ip_params.vh
 // header: curve/rpu_ip_derived.vh
+// header: curve/rpu_frame_fn.vh
 
 // texture: the texture path
 texture/rpu_ray_plane.v

@@ -79,7 +79,8 @@ declare -A REDUCED=(
 )
 # Default module list and run order: roughly by size, the biggest last.
 ALL=(rpu_resolve rpu_fifo rpu_mul rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guide_pair rpu_ray_plane
-     rpu_ray_gen rpu_texture rpu_sphere rpu_candidate rpu_ip_step rpu_ip rpu_top)
+     rpu_ray_gen rpu_texture rpu_sphere rpu_frame rpu_candidate rpu_test_point rpu_ip_step rpu_ip
+     rpu_top)
 
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 

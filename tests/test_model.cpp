@@ -568,11 +568,12 @@ TEST(RefModel, UnrolledAndIterativeProcessesAreEqual) {
           Overflow o1, o2;
           const SearchInterval si = sphere_unit(p, m.camera.eye, ray.vhat, s, o1);
           if (!si.pred1) continue;
-          const IpState a = ip_process_unrolled(p, s, si, o1);
-          const IpState b = ip_process_iterative(p, s, si, o2);
+          const PairFrame f = frame_unit(p, s, si, o1);
+          const IpState a = ip_process_unrolled(p, s, f, o1);
+          const IpState b = ip_process_iterative(p, s, f, o2);
           ASSERT_EQ(a.tau, b.tau);
-          ASSERT_EQ(a.lo.X, b.lo.X);
-          ASSERT_EQ(a.lo.t, b.lo.t);
+          ASSERT_EQ(a.lo.md, b.lo.md);
+          ASSERT_EQ(a.hi.md, b.hi.md);
           ASSERT_EQ(a.k, p.K());
           ++pairs;
         }

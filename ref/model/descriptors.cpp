@@ -95,6 +95,50 @@ SegmentDesc quantize_segment(const scene::CompiledSegment& cs, const Normalizati
   return s;
 }
 
+// The chord's 2-D frame of a quantised curve segment (docs/fixed-point.md, "The candidate in the
+// chord's frame"). e1 is the first curved guide's direction (else the second's, else a fixed
+// perpendicular of d), made exactly perpendicular to the quantised d in double; e2 = d̂ × e1.
+FrameDesc quantize_frame(const scene::CompiledSegment& cs, const SegmentDesc& s,
+                         const Normalization& norm) {
+  FrameDesc f;
+  const scene::Segment& g = cs.geom;
+  const double L = std::sqrt(static_cast<double>(s.L2));
+  const Vec3 dh = normalize(Vec3{static_cast<double>(s.d.x), static_cast<double>(s.d.y),
+                                 static_cast<double>(s.d.z)});
+  Vec3 e1;
+  if (s.guide[0].mode != GuideMode::kStraight) {
+    e1 = g.guide[0].u;
+  } else if (s.guide[1].mode != GuideMode::kStraight) {
+    e1 = g.guide[1].u;
+  } else {
+    e1 = cross(dh, std::fabs(dh.x) > 0.5 ? Vec3{0, 1, 0} : Vec3{1, 0, 0});
+  }
+  e1 = normalize(e1 - dh * dot(e1, dh));
+  const Vec3 e2 = cross(dh, e1);
+  // |e/L| ≤ 1/L < 2^-(bit_length(ceil L) - 1): |m| < 2^(EM+1), EM + 2 signed bits (18).
+  f.s = HwParams::kFrameMant +
+        fixed::bit_length(static_cast<fixed::u128>(static_cast<i64>(std::ceil(L))));
+  const double sc = std::ldexp(1.0, f.s) / L;
+  f.e1 = {std::llround(e1.x * sc), std::llround(e1.y * sc), std::llround(e1.z * sc)};
+  f.e2 = {std::llround(e2.x * sc), std::llround(e2.y * sc), std::llround(e2.z * sc)};
+  if (s.guide[1].mode != GuideMode::kStraight) {
+    f.c2 = std::llround(std::ldexp(dot(g.guide[1].u, e1), HwParams::kFrameCosFrac));
+    f.s2 = std::llround(std::ldexp(dot(g.guide[1].u, e2), HwParams::kFrameCosFrac));
+  }
+  for (int k = 0; k < 2; ++k) {
+    FrameGuide& q = f.guide[k];
+    q.mode = s.guide[k].mode;
+    const double eta = g.guide[k].h * norm.scale / L;
+    if (q.mode == GuideMode::kArc) {
+      q.eta = std::llround(std::ldexp(eta, HwParams::kFrameGuideFrac));
+      q.eta2 = q.eta * q.eta;
+    } else if (q.mode == GuideMode::kFlat) {
+      q.a = std::llround(std::ldexp(1.0 / (2.0 * eta), HwParams::kFrameFlatFrac));
+    }
+  }
+  return f;
+}
+
 // Bits to add to a width so that `have` LSBs per pixel reach Precision::kHold.
 int bits_to_hold(double have) {
   return have >= Precision::kHold ? 0
@@ -235,8 +279,10 @@ ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
                        prim.kind == scene::Primitive::Kind::kCurve ? "curves" : "textures",
                        prim.index, cs.index);
   };
-  for (const auto& cs : sc.curve_segments)
+  for (const auto& cs : sc.curve_segments) {
     m.curve_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
+    m.curve_segments.back().frame = quantize_frame(cs, m.curve_segments.back(), m.norm);
+  }
   for (const auto& cs : sc.texture_segments)
     m.texture_segments.push_back(quantize_segment(cs, m.norm, p, where(cs)));
   for (const auto& cs : sc.surfaces) {

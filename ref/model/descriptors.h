@@ -40,6 +40,23 @@ struct GuideDesc {
   i64 b = 0;    // L²/(4h²), Q(0.FT) (flat)
 };
 
+// The chord's 2-D frame of a curve segment (docs/fixed-point.md, "The candidate in the chord's
+// frame"): unit vectors e1, e2 ⊥ d (e1 along the first curved guide, e2 = d̂ × e1), stored as
+// e/L = m · 2^-s with |m| < 2^(EM+1), the second guide's direction in the frame, and each guide's
+// shape in units of L (η = h/L).
+struct FrameGuide {
+  GuideMode mode = GuideMode::kStraight;  // as GuideDesc::mode
+  i64 eta = 0;    // η, Q(.FG) (arc)
+  i64 eta2 = 0;   // eta², Q(.2FG) (arc): the root of eta2 is eta exactly, so ĝ(w = 0) = 0
+  i64 a = 0;      // 1/(2η), Q(.FA) (flat)
+};
+struct FrameDesc {
+  IVec3 e1, e2;   // mantissas of e1/L, e2/L
+  int s = 0;      // their exponent: e/L = m · 2^-s, s = EM + bit_length(ceil L)
+  i64 c2 = 0, s2 = 0;  // u2·e1, u2·e2, Q(1.FC) (0 when the second guide is straight)
+  FrameGuide guide[2];
+};
+
 struct SegmentDesc {
   IVec3 p1;         // LSB
   IVec3 d;          // p2 - p1, LSB
@@ -50,6 +67,7 @@ struct SegmentDesc {
   int inv_s = 0;
   GuideDesc guide[2];
   i128 w0_2 = 0;    // texture half-width², LSB² (textures only)
+  FrameDesc frame;  // the chord's 2-D frame (curves only)
   std::int32_t primitive = 0;
 };
 

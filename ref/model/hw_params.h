@@ -7,6 +7,8 @@
 // the docs tables) walks that table.
 #pragma once
 
+#include <algorithm>
+
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -48,6 +50,33 @@ struct HwParams {
   // Fraction bits kept of the sphere unit's cross product q × v̂ before it is squared: the
   // squared ray distance |q × v̂|² is then exact to about 2^(2-G)·R LSB² (docs/fixed-point.md).
   static constexpr int kSphereGuard = 2;
+  // The candidate evaluator in the chord's 2-D frame (docs/fixed-point.md, "The candidate in the
+  // chord's frame"): fixed formats, in units of the chord length L, independent of the widths
+  // above (the frame is scale-free). FX: frame coordinates x, y; FG: the guides' offsets ĝ = g/L;
+  // FW: w = t(1−t); FP: t, c2·t, s2·t into the guide products; EM: the frame vectors' mantissa
+  // magnitude bits; FA: a flat guide's 1/(2η); FC: c2, s2. The offsets (and md) of step k keep
+  // md_frac(k) = min(kFrameMdFracMax, kFrameMdFracBase + n1·k) fraction bits: the interval
+  // shrinks by 2^-n1 per step, and so does the resolution the argmin needs.
+  static constexpr int kFrameFrac = 24;
+  static constexpr int kFrameGuideFrac = 17;
+  static constexpr int kFrameWFrac = 28;
+  static constexpr int kFrameProdFrac = 23;
+  static constexpr int kFrameMant = 16;
+  static constexpr int kFrameFlatFrac = 24;
+  static constexpr int kFrameCosFrac = 16;
+  static constexpr int kFrameMdFracBase = 14;
+  static constexpr int kFrameMdFracMax = 20;
+  static_assert(kFrameFrac >= kFrameGuideFrac && kFrameFrac >= kFrameMdFracMax &&
+                kFrameWFrac >= kFrameGuideFrac && 2 * kFrameGuideFrac >= kFrameWFrac);
+  // An arc guide's radicand η² + w with η ≤ 16 (kFlatRatio): below 2^(2·FG + 9).
+  // The candidate's input widths (signed): x, y (|x| < 4), t, c2·t, s2·t (|t| < 8), W (|w| < 128),
+  // a flat guide's offset (|ĝ| < 4).
+  static constexpr int kCandXW = kFrameFrac + 3;
+  static constexpr int kCandTW = kFrameProdFrac + 4;
+  static constexpr int kCandWW = kFrameWFrac + 8;
+  static constexpr int kCandAW = kFrameGuideFrac + 3;
+  static constexpr int frame_radicand_w() { return 2 * kFrameGuideFrac + 9; }
+  int md_frac(int k) const { return std::min(kFrameMdFracMax, kFrameMdFracBase + n1 * k); }
   // Upper limits of the widths a user may raise (the table's maxima; validate() checks them).
   static constexpr int kMaxCoordW = hw_range::coord_w_max;
   static constexpr int kMaxDirFrac = hw_range::dir_frac_max;
@@ -67,10 +96,15 @@ struct HwParams {
   int l2_w() const { return 2 * coord_w + 3; }            // L2W: L² = |d|²
   int guide_desc_w() const { return 2 + guide_h_w() + coord_w + t_frac + 3 * unit_w(); }  // GdW
   int camera_desc_w() const { return 9 * ray_dir_w() + 12 * edge_w() + 3 * coord_w; }    // CamW
-  // SegW: {texture, primitive, p1, d, c0, R2, L2, inv_m, inv_s, two guides}
+  // SegW: {texture, primitive, p1, d, c0, R2, L2, inv_m, inv_s, two guides, the frame
+  // descriptor, two frame guides}
+  static constexpr int frame_desc_w() {  // {e1, e2, s, c2, s2, a1, a2}: `RPU_FRDW
+    return 6 * (kFrameMant + 2) + 6 + 2 * (kFrameCosFrac + 2) + 2 * (kFrameFlatFrac - 3);
+  }
+  static constexpr int frame_guide_w() { return 2 + kFrameGuideFrac + 5 + frame_radicand_w(); }
   int segment_desc_w(int prim_w) const {
     return 1 + prim_w + 3 * coord_w + 3 * diff_w() + 3 * coord_w + r2_w() + l2_w() + inv_w + 7 +
-           2 * guide_desc_w();
+           2 * guide_desc_w() + frame_desc_w() + 2 * frame_guide_w();
   }
   int depth_w() const { return coord_w + 4 + edge_w() + 2; }  // DepthW: (X - h)·W
   // Surfaces: guard bits G of the scaled local coordinates (x·k floored to G bits below the

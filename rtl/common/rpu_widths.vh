@@ -25,3 +25,34 @@
 
 // The indicator's part of a surface descriptor (rpu_surface_desc.vh), one word: 15·LW + 61 bits.
 `define RPU_SDW(surfw)       (15 * (surfw) + 61)
+
+// The candidate evaluator in the chord's 2-D frame (docs/fixed-point.md, "The candidate in the
+// chord's frame"; HwParams::kFrame*, kCand*): fixed formats in units of the chord length L.
+`define RPU_FX               24                     // frame coordinates x, y
+`define RPU_FG               17                     // guides' offsets ĝ = g/L
+`define RPU_FW               28                     // w = t(1−t)
+`define RPU_FP               23                     // t, c2·t, s2·t into the guide products
+`define RPU_FOB              14                     // md fraction bits of step 0 ...
+`define RPU_FOMAX            20                     // ... growing by n1 per step up to this
+`define RPU_MDFRAC(n1, k)    (`RPU_FOB + (n1) * (k) < `RPU_FOMAX ? `RPU_FOB + (n1) * (k) : `RPU_FOMAX)
+`define RPU_CXW              (`RPU_FX + 3)          // candidate x, y (|x| < 4)
+`define RPU_CTW              (`RPU_FP + 4)          // candidate t, c2·t, s2·t (|t| < 8)
+`define RPU_CWW              (`RPU_FW + 8)          // candidate w (|w| < 128)
+`define RPU_CAW              (`RPU_FG + 3)          // a flat guide's offset (|ĝ| < 4)
+`define RPU_FRADW            (2 * `RPU_FG + 9)      // an arc guide's radicand η² + w (η ≤ 16)
+`define RPU_ETAW             (`RPU_FG + 5)          // η, unsigned
+`define RPU_FGDW             (2 + `RPU_ETAW + `RPU_FRADW)  // a frame guide {mode, η, η²}
+`define RPU_FEM              16                     // frame vectors' mantissa: |m| < 2^(FEM+1)
+`define RPU_FEW              (`RPU_FEM + 2)         // e1, e2 components, signed
+`define RPU_FSW              6                      // the frame exponent s (20 ≤ s ≤ 63)
+`define RPU_FC               16                     // c2, s2: Q(1.FC)
+`define RPU_FCW              (`RPU_FC + 2)
+`define RPU_FA               24                     // a flat guide's 1/(2η): Q(.FA) ≤ 2^-5
+`define RPU_FAW              (`RPU_FA - 3)          // signed
+// The frame descriptor {e1, e2, s, c2, s2, a1, a2} (rpu_frame_desc.vh).
+`define RPU_FRDW             (6 * `RPU_FEW + `RPU_FSW + 2 * `RPU_FCW + 2 * `RPU_FAW)
+// The pair's frame coefficients (rpu_frame's outputs; n = N, FT = TFrac).
+`define RPU_FW0W(n)          (`RPU_FW + 2 * (n) + 6)   // W's constant term
+`define RPU_FW1W(n)          (`RPU_FW + (n) + 8)       // W's m term
+`define RPU_FW2W             (`RPU_FW + 5)             // W's m² term
+`define RPU_FCAW(tfrac)      (`RPU_FCW + (tfrac) + 3)  // c2·α, c2·β, s2·α, s2·β

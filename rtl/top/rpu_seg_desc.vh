@@ -1,9 +1,13 @@
 // A segment descriptor in rpu_top's segment RAM (SegmentDesc, ref/model/descriptors.h; formats:
 // docs/fixed-point.md; the harness packs it in sim/harness/rtl_types.cpp), LSB first:
-// {tex, prim, p1, d, c0, R2 | w0², L², inv_m, inv_s, g1, g2}. A texture's c0 is unused and its
-// R2 field holds w0². Included inside rpu_top after rpu_guide_desc.vh; each offset is defined
-// from the previous one.
-  localparam integer SegG2O   = 0;                         // guide of end 2 (rpu_guide_desc.vh)
+// {tex, prim, p1, d, c0, R2 | w0², L², inv_m, inv_s, g1, g2, frame, fg1, fg2}. A texture's c0,
+// frame and frame guides are unused (0) and its R2 field holds w0². Included inside rpu_top
+// after rpu_guide_desc.vh; each offset is defined from the previous one.
+  localparam integer SegFgO   = 0;                         // frame guides {fg1, fg2} (rpu_ip)
+  localparam integer SegFgW   = 2 * `RPU_FGDW;
+  localparam integer SegFrO   = SegFgO + SegFgW;           // frame descriptor (rpu_frame)
+  localparam integer SegFrW   = `RPU_FRDW;
+  localparam integer SegG2O   = SegFrO + SegFrW;           // guide of end 2 (rpu_guide_desc.vh)
   localparam integer SegG1O   = SegG2O + GdW;              // guide of end 1
   localparam integer SegInvSO = SegG1O + GdW;              // inv_s: 1/L² = inv_m · 2^-inv_s
   localparam integer SegInvSW = 7;

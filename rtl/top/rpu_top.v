@@ -43,7 +43,8 @@ module rpu_top #(
   parameter integer CamW   = 9 * `RPU_VGW(DirFrac) + 12 * `RPU_EGW(EdgeFrac) + 3 * CoordW,
   parameter integer SegW   = 1 + PrimW + 9 * CoordW + 3 + `RPU_R2W(CoordW) + `RPU_L2W(CoordW)
                            + InvW + 7 + 2 * (2 + `RPU_HW(CoordW) + CoordW + TFrac
-                                             + 3 * `RPU_UW(UnitFrac)),
+                                             + 3 * `RPU_UW(UnitFrac))
+                           + `RPU_FRDW + 2 * `RPU_FGDW,
   parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)
 ) (
   input  wire                clk_i,
@@ -91,7 +92,7 @@ module rpu_top #(
 );
   localparam integer EgW  = `RPU_EGW(EdgeFrac);
   localparam integer EoW  = EgW + IdxW + 1;           // rpu_ray_gen's edge outputs
-  localparam integer MdW  = Metric == 0 ? CoordW + 4 : `RPU_MD2W(CoordW);
+  localparam integer MdW  = Metric == 0 ? `RPU_FOMAX + 3 : 2 * `RPU_FOMAX + 3;  // rpu_ip's md
 `include "rpu_guide_desc.vh"
   localparam integer GdW = GdWords;  // one guide (the segment descriptor holds two)
 `include "rpu_seg_desc.vh"
@@ -189,6 +190,8 @@ module rpu_top #(
   wire [SegInvMW-1:0] sd_invm = sd[SegInvMO +: SegInvMW];
   wire [SegInvSW-1:0] sd_invs = sd[SegInvSO +: SegInvSW];
   wire [2*GdW-1:0]    sd_g    = sd[SegG2O +: 2 * GdW];     // {g1, g2}
+  wire [SegFrW-1:0]   sd_fr   = sd[SegFrO +: SegFrW];
+  wire [SegFgW-1:0]   sd_fg   = sd[SegFgO +: SegFgW];      // {fg1, fg2}
 
   // ---- sphere unit ----
   wire             sp_valid, sp_pred1, sp_ovf;
@@ -203,7 +206,7 @@ module rpu_top #(
     .clk_i, .rst_ni, .valid_i(rg_valid && !sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
     .c0_i(sd_c0),
     .r2_i(sd_r2), .p1_i(sd_p1), .d_i(sd_d), .inv_m_i(sd_invm), .inv_s_i(sd_invs),
-    .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_g, rg_edges}),
+    .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_g, sd_fr, sd_fg, rg_edges}),
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
     .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
     .ovf_o(sp_ovf), .tag_o(sp_tag));
@@ -218,6 +221,7 @@ module rpu_top #(
     .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(sp_tag[SpP1O +: SegP1W]),
     .d_i(sp_tag[SpDO +: SegDW]), .l2_i(sp_tag[SpL2O +: SegL2W]),
     .g1_i(sp_tag[SpGO + GdW +: GdW]), .g2_i(sp_tag[SpGO +: GdW]),
+    .fr_i(sp_tag[SpFrO +: SegFrW]), .fg_i(sp_tag[SpFgO +: SegFgW]),
     .ctx_i({sp_tag[SpItO +: ItW], sp_tag[SpPrimO +: PrimW], sp_pred1, sp_ovf,
             sp_tag[SpEdgesO +: EdgW]}),
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));

@@ -20,7 +20,9 @@
 
   // Beside the sphere unit: {item, prim, p1, d, L², g1, g2, edges}.
   localparam integer SpEdgesO = 0;
-  localparam integer SpGO     = SpEdgesO + EdgW;           // both guides, {g1, g2}
+  localparam integer SpFgO    = SpEdgesO + EdgW;           // the frame guides {fg1, fg2}
+  localparam integer SpFrO    = SpFgO + SegFgW;            // the frame descriptor
+  localparam integer SpGO     = SpFrO + SegFrW;            // both guides, {g1, g2}
   localparam integer SpL2O    = SpGO + 2 * GdW;
   localparam integer SpDO     = SpL2O + SegL2W;
   localparam integer SpP1O    = SpDO + SegDW;

@@ -67,6 +67,22 @@ Bits pack_segment(const ref::HwParams& p, const ref::SegmentDesc& s, bool textur
   d.add(s.inv_m, p.inv_w);
   d.add(s.inv_s, 7);
   for (const ref::GuideDesc& g : s.guide) add_guide(d, p, g);
+  // The frame descriptor and frame guides (0 for a texture), rtl/curve/rpu_frame.v, rpu_ip.v.
+  const ref::FrameDesc f = texture ? ref::FrameDesc{} : s.frame;
+  using H = ref::HwParams;
+  const int EW = H::kFrameMant + 2, CW2 = H::kFrameCosFrac + 2, AW = H::kFrameFlatFrac - 3;
+  d.add3(f.e1.x, f.e1.y, f.e1.z, EW);
+  d.add3(f.e2.x, f.e2.y, f.e2.z, EW);
+  d.add(f.s, 6);
+  d.add(f.c2, CW2);
+  d.add(f.s2, CW2);
+  d.add(f.guide[0].a, AW);
+  d.add(f.guide[1].a, AW);
+  for (const ref::FrameGuide& g : f.guide) {
+    d.add(static_cast<i128>(g.mode), 2);
+    d.add(g.eta, H::kFrameGuideFrac + 5);
+    d.add(g.eta2, H::frame_radicand_w());
+  }
   return d.bits();
 }
 
@@ -203,20 +219,23 @@ std::string explain_item(const ref::ModelScene& m, const WorkItem& item) {
                      "ovf {}\n", si.pred1 ? 1 : 0, dec(si.tc), dec(si.half_chord), vec(si.A),
                      vec(si.B), dec(si.alpha), dec(si.beta), ovf.flag ? 1 : 0);
     if (!si.pred1) return s + "    (no pred1: the IP and capture do not run)\n";
-    ref::IpState st = ref::ip_start(p, sd, si, ovf);
-    s += fmt::format("    IP step 0: tau {} lo t {} X {} md {} | hi t {} X {} md {}\n", st.tau,
-                     dec(st.lo.t), vec(st.lo.X), dec(st.lo.md), dec(st.hi.t), vec(st.hi.X),
+    const ref::PairFrame f = ref::frame_unit(p, sd, si, ovf);
+    s += fmt::format("    frame unit: x0 {} x1 {} y0 {} y1 {} w [{} {} {}]\n", dec(f.x0), dec(f.x1),
+                     dec(f.y0), dec(f.y1), dec(f.w[0]), dec(f.w[1]), dec(f.w[2]));
+    ref::IpState st = ref::ip_start(p, sd, f, ovf);
+    s += fmt::format("    IP step 0: tau {} lo md {} | hi md {}\n", st.tau, dec(st.lo.md),
                      dec(st.hi.md));
     for (int k = 1; k <= p.K(); ++k) {
       ref::IpStepTrace tr;
-      st = ref::ip_step(p, sd, si, st, ovf, &tr);
+      st = ref::ip_step(p, sd, f, st, ovf, &tr);
       std::string sums;
       for (int q = 0; q < p.J(); ++q) sums += (q ? " " : "") + dec(tr.sd[static_cast<size_t>(q)]);
-      s += fmt::format("    IP step {}: sums [{}] eta {} -> tau {} lo t {} X {} | hi t {} X {} "
-                       "ovf {}\n", k, sums, tr.eta, st.tau, dec(st.lo.t), vec(st.lo.X),
-                       dec(st.hi.t), vec(st.hi.X), ovf.flag ? 1 : 0);
+      s += fmt::format("    IP step {}: sums [{}] eta {} -> tau {} lo md {} | hi md {} ovf {}\n",
+                       k, sums, tr.eta, st.tau, dec(st.lo.md), dec(st.hi.md), ovf.flag ? 1 : 0);
     }
-    const ref::CaptureOut c = ref::capture_unit(p, m.camera, ray, st.lo.X, st.lo.t);
+    const ref::TestPoint tp = ref::test_point_unit(p, sd, si, st.tau, ovf);
+    s += fmt::format("    test point: t {} X {}\n", dec(tp.t), vec(tp.X));
+    const ref::CaptureOut c = ref::capture_unit(p, m.camera, ray, tp.X, tp.t);
     s += fmt::format("    capture: signs L{} R{} T{} B{} t_in_range {} hit {} depth {}\n",
                      c.signs[0] ? 1 : 0, c.signs[1] ? 1 : 0, c.signs[2] ? 1 : 0,
                      c.signs[3] ? 1 : 0, c.t_in_range ? 1 : 0, c.hit ? 1 : 0, dec(c.depth));

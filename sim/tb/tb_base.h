@@ -6,7 +6,8 @@
 //       random at power-up (--x-initial unique, RPU_X_SEED), the seed (RPU_SEED) of tb.rng, the
 //       vector count (tb.vectors(default), RPU_VECTORS), clock (tick), reset, the FST trace on
 //       request (+trace, or RPU_TRACE=1: each failing test keeps <test>.fst in RPU_TRACE_DIR or
-//       the working directory), FAILURE lines (fail) and the "matched N items" line (pass).
+//       the working directory), FAILURE lines (fail) and the "matched N items" line (pass, with
+//       the longest latency of run()'s items).
 //   tb.run(items, stream)  plays a list of items through a valid_i/valid_o unit (reset first)
 //       and checks every result, in order, against its item: the source offers the next item with
 //       random gaps (junk on every input in between), holds it until ready_o takes it where the
@@ -286,6 +287,7 @@ class Testbench {
   }
   long cycle() const { return cycle_; }
   long matched() const { return matched_; }
+  long max_latency() const { return max_latency_; }  // the longest of run()'s items, in cycles
   void add_matched(long n) { matched_ += n; }
 
   // Inputs settled before the edge (the outputs then show this cycle's combinational values).
@@ -325,6 +327,7 @@ class Testbench {
   // "<name>: matched N items in C cycles (details)"; returns 0.
   int pass(const char* fmt = nullptr, ...) __attribute__((format(printf, 2, 3))) {
     std::printf("%s: matched %ld items in %ld cycles", name_, matched_, cycle_);
+    if (max_latency_ > 0) std::printf(", latency %ld", max_latency_);
     if (fmt) {
       std::va_list ap;
       va_start(ap, fmt);
@@ -427,6 +430,7 @@ class Testbench {
           if (latency == kSameLatency) latency = lat;
           if (latency >= 0) o.value("latency", latency, lat);
           r.max_latency = std::max(r.max_latency, lat);
+          max_latency_ = std::max(max_latency_, lat);
           if (!o.ok()) return mismatch(r, s, items, p.index, o);
           pending.pop_front();
           ++matched;
@@ -537,7 +541,7 @@ class Testbench {
 #endif
   std::string trace_path_;
   bool keep_trace_ = false, failed_ = false, settled_ = false, was_reset_ = false;
-  long cycle_ = 0, matched_ = 0;
+  long cycle_ = 0, matched_ = 0, max_latency_ = 0;
 };
 
 }  // namespace rpu::sim

@@ -9,6 +9,7 @@
 
 #include "tb_base.h"
 #include "tb_guide.h"
+#include "model/curve/rpu_test_point.h"
 
 namespace rpu::sim {
 
@@ -72,34 +73,34 @@ inline bool sample_pred1_pair(const scene::CompiledScene& sc, const ref::ModelSc
   return out.si.pred1;
 }
 
-// The interval and segment input fields shared by rpu_candidate, rpu_ip_step and rpu_ip.
+// The interval and segment input fields shared by rpu_test_point and rpu_ip (A and B − A where
+// the unit has them).
 template <class Top>
 void pair_inputs(Inputs& in, Top& top, const ref::HwParams& p, const ref::SegmentDesc& s,
                  const ref::SearchInterval& si) {
   const int CW = p.coord_w, DW = p.diff_w(), TW = p.t_w();
-  in.vec("A", top.a_i, si.A, CW).vec("AB", top.ab_i, si.AB, DW);
+  if constexpr (requires { top.a_i; }) in.vec("A", top.a_i, si.A, CW).vec("AB", top.ab_i, si.AB, DW);
   in("alpha", top.alpha_i, si.alpha, TW)("beta", top.beta_i, si.beta, TW);
   in.vec("p1", top.p1_i, s.p1, CW).vec("d", top.d_i, s.d, DW)("L2", top.l2_i, s.L2, p.l2_w());
   const ref::GuideDesc& g1 = s.guide[0];
   const ref::GuideDesc& g2 = s.guide[1];
   guide_input(in, "g1", top.g1_i, p, g1);
   guide_input(in, "g2", top.g2_i, p, g2);
-  // rpu_candidate and rpu_ip_step take h² from their caller (rpu_ip squares h once per pair).
+  // rpu_test_point takes h² from its caller (rpu_ip squares h once per pair).
   if constexpr (requires { top.hh1_i; }) {
     in("hh1", top.hh1_i, i128{g1.h} * g1.h, p.guide_radicand_w());
     in("hh2", top.hh2_i, i128{g2.h} * g2.h, p.guide_radicand_w());
   }
 }
 
-// Width of one md value, and the state vector {τ, lo.t, lo.X (z, y, x), lo.md, hi.md}.
+// Width of one md value (rpu_candidate's md_o), and the state vector {τ, lo.md, hi.md}.
 inline int md_width(const ref::HwParams& p) {
-  return p.metric == ref::Metric::kAbs ? p.coord_w + 4 : 2 * p.coord_w + 8;
+  constexpr int F = ref::HwParams::kFrameMdFracMax;
+  return p.metric == ref::Metric::kAbs ? F + 3 : 2 * F + 3;
 }
 inline Bits pack_state(const ref::HwParams& p, const ref::IpState& st) {
   Concat c;
   c.add(static_cast<i128>(st.tau), p.n);
-  c.add(st.lo.t, p.t_w());
-  c.add3(st.lo.X.x, st.lo.X.y, st.lo.X.z, p.coord_w + 3);
   c.add(st.lo.md, md_width(p));
   c.add(st.hi.md, md_width(p));
   return c.bits();
@@ -108,15 +109,54 @@ inline Bits pack_state(const ref::HwParams& p, const ref::IpState& st) {
 // The state out of a port, compared field by field with the expected one.
 template <class P>
 void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w) {
+  const int MdW = md_width(p);
+  const Bits b = get_bits(port, p.n + 2 * MdW);
+  int at = b.width();
+  const auto next = [&](int w) { return at -= w; };
+  o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
+  o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
+  o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
+}
+
+
+// The frame descriptor {e1, e2, s, c2, s2, a1, a2} (rpu_frame's fr_i) and the frame guides
+// {g1, g2}, each {mode, η, η²} (rpu_candidate's g1_i, g2_i; rpu_ip's fg_i).
+inline Bits frame_bits(const ref::FrameDesc& f) {
+  using H = ref::HwParams;
+  const int EW = H::kFrameMant + 2, CW2 = H::kFrameCosFrac + 2, AW = H::kFrameFlatFrac - 3;
+  Concat c;
+  c.add3(f.e1.x, f.e1.y, f.e1.z, EW);
+  c.add3(f.e2.x, f.e2.y, f.e2.z, EW);
+  c.add(f.s, 6);
+  c.add(f.c2, CW2);
+  c.add(f.s2, CW2);
+  c.add(f.guide[0].a, AW);
+  c.add(f.guide[1].a, AW);
+  return c.bits();
+}
+inline Bits frame_guide_bits(const ref::FrameDesc& f) {
+  using H = ref::HwParams;
+  Concat c;
+  for (const ref::FrameGuide& g : f.guide) {
+    c.add(static_cast<i128>(g.mode), 2);
+    c.add(g.eta, H::kFrameGuideFrac + 5);
+    c.add(g.eta2, H::frame_radicand_w());
+  }
+  return c.bits();
+}
+// rpu_ip's result {τ, t, X (z, y, x), lo.md, hi.md}, compared field by field.
+template <class P>
+void ip_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w,
+                const ref::TestPoint& tp) {
   const int TW = p.t_w(), XW = p.coord_w + 3, MdW = md_width(p);
   const Bits b = get_bits(port, p.n + TW + 3 * XW + 2 * MdW);
   int at = b.width();
   const auto next = [&](int w) { return at -= w; };
   o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
-  o.value("lo.t", w.lo.t, b.field_signed(next(TW), TW));
+  o.value("t", tp.t, b.field_signed(next(TW), TW));
   const i128 z = b.field_signed(next(XW), XW), y = b.field_signed(next(XW), XW);
   const i128 x = b.field_signed(next(XW), XW);
-  o.value("lo.X.x", w.lo.X.x, x).value("lo.X.y", w.lo.X.y, y).value("lo.X.z", w.lo.X.z, z);
+  o.value("X.x", tp.X.x, x).value("X.y", tp.X.y, y).value("X.z", tp.X.z, z);
   o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
   o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
 }

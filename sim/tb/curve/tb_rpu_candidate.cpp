@@ -1,119 +1,136 @@
-// rpu_candidate against rpu::ref::candidate_evaluator: real search intervals of curve12 (every
-// segment, pixels around its projection), random and edge τ indices, random valid gaps, a random
-// tag per item (checked). A quarter of the pairs are edited: curve12 has no flat guide, so their
-// guides become flat (h just above the kFlatRatio·L threshold up to far beyond it, a and b as the
-// descriptor compiler forms them), arcs, straight or the unused mode code 3; and their α, β are
-// drawn over the whole Q(3.FT) range or at its ends, so t saturates both ways (ovf_o) and falls
-// below 0 (where the guides vanish). A third of the edited pairs take the longest segments the
-// descriptor formats hold, both guides flat just past the threshold (a, b largest: their low bits
-// reach g) and t in [1/4, 3/4].
-#include <algorithm>
+// rpu_candidate against rpu::ref::candidate_unit at one Fo (the offsets' fraction bits of a step):
+// real pairs of curve12 (every segment, pixels around its projection) through the frame unit at
+// random and edge τ indices; a quarter of them with edited frame guides (arc η over [0, 16],
+// flat, straight, the unused mode code 3); a quarter with every input drawn over its whole port
+// width (t, c2·t, s2·t, w and the flat offsets beyond their clamps, offsets that saturate:
+// ovf_o); random valid gaps and a random tag per item (checked). FO = 0: the iterative form's
+// run-time Fo, drawn per item over [8, 20] (fo_i).
 #include <vector>
 
 #include "Vrpu_candidate.h"
 #include "tb_ip_common.h"
 
+#ifndef FO
+#define FO 20
+#endif
+
 struct Item {
   size_t seg;
-  ref::SegmentDesc s;  // the segment's descriptor, edited or not
-  bool edited;
-  ref::SearchInterval si;
-  std::uint64_t m;
+  int kind;  // 0 real, 1 edited guides, 2 random inputs
+  int fo;    // the offsets' fraction bits
+  ref::FrameDesc fd;
+  ref::CandidateIn in;
   unsigned tag;
   ref::Candidate want;
   bool ovf;
 };
 
+namespace {
+
+using H = ref::HwParams;
+
+// A frame guide as the compiler forms it (η² exact), or the unused mode code 3.
+ref::FrameGuide random_guide(std::mt19937_64& rng) {
+  ref::FrameGuide g;
+  switch (rng() % 4) {
+    case 0: g.mode = ref::GuideMode::kStraight; break;
+    case 1: g.mode = ref::GuideMode::kFlat; break;
+    case 2: g.mode = static_cast<ref::GuideMode>(3); break;
+    default: {
+      g.mode = ref::GuideMode::kArc;
+      const std::int64_t max = std::int64_t{16} << H::kFrameGuideFrac;
+      const std::uint64_t r = rng() % 8;
+      g.eta = r == 0 ? 0 : r == 1 ? max : static_cast<std::int64_t>(rng() % (max + 1));
+      g.eta2 = g.eta * g.eta;
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_candidate> tb("tb_rpu_candidate", argc, argv);
   auto& rng = tb.rng;
   const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
-  const ref::HwParams p = sim::tb_params();
+  ref::HwParams p = sim::tb_params();
+  p.metric = METRIC ? ref::Metric::kSquared : ref::Metric::kAbs;
   const ref::ModelScene m = ref::quantize_scene(sc, p);
-  const int CW = p.coord_w, TW = p.t_w();
   const long count = tb.vectors(100000);
+  const int MdW = METRIC ? 2 * H::kFrameMdFracMax + 3 : H::kFrameMdFracMax + 3;
+  const int RadW = H::frame_radicand_w(), EtaW = H::kFrameGuideFrac + 5;
 
   std::vector<Item> items;
-  long n_edited = 0, n_long = 0, n_sat = 0, n_neg = 0;
+  long n_kind[3] = {0, 0, 0}, n_sat = 0, n_arc = 0, n_flat = 0;
   while (static_cast<long>(items.size()) < count) {
     sim::SampledPair pair;
     if (!sim::sample_pred1_pair(sc, m, p, rng, pair)) continue;
-    ref::SegmentDesc s = m.curve_segments[pair.seg];
-    const bool edited = rng() % 4 == 0;
-    if (edited && rng() % 3 == 0) {
-      // The longest segments the descriptor formats hold (ends near opposite corners of the
-      // ±7/16·2^CW cube) with both guides flat just past the threshold: a = L²/2h is then
-      // largest (≈ 2^(CW−4.4)), so the low bits of a and b reach g; t within [1/4, 3/4].
-      const i128 lim = (i128{7} << CW) / 16;
-      std::int64_t* p1c[3] = {&s.p1.x, &s.p1.y, &s.p1.z};
-      std::int64_t* dc[3] = {&s.d.x, &s.d.y, &s.d.z};
-      for (int c = 0; c < 3; ++c) {
-        const i128 e1 = rng() % 2 ? lim - static_cast<i128>(rng() % 4096)
-                                  : -lim + static_cast<i128>(rng() % 4096);
-        const i128 e2 = e1 > 0 ? -lim + static_cast<i128>(rng() % 4096)
-                               : lim - static_cast<i128>(rng() % 4096);
-        *p1c[c] = static_cast<std::int64_t>(std::clamp(e1, -lim, lim));
-        *dc[c] = static_cast<std::int64_t>(std::clamp(e2, -lim, lim) - *p1c[c]);
-      }
-      s.L2 = i128{s.d.x} * s.d.x + i128{s.d.y} * s.d.y + i128{s.d.z} * s.d.z;
-      for (ref::GuideDesc& g : s.guide) {
-        g.u = {};
-        sim::edit_guide(p, s.L2, rng, g, {.unused_mode = true, .flat_near_threshold = true});
-      }
-      const i128 one = i128{1} << p.t_frac;
-      pair.si.alpha = one / 4 + static_cast<i128>(rng() % static_cast<std::uint64_t>(one / 4));
-      pair.si.beta = static_cast<i128>(rng() % static_cast<std::uint64_t>(one / 4));
-      ++n_edited;
-      ++n_long;
-    } else if (edited) {
-      for (ref::GuideDesc& g : s.guide)
-        if (rng() % 4 != 0) sim::edit_guide(p, s.L2, rng, g, {.unused_mode = true});
-      switch (rng() % 4) {
-        case 0:  // α, β anywhere in Q(3.FT)
-          pair.si.alpha = sim::random_signed(rng, TW);
-          pair.si.beta = sim::random_signed(rng, TW);
-          break;
-        case 1: {  // the range ends: t saturates high or low along the interval
-          const i128 t_max = (i128{1} << (TW - 1)) - 1, t_min = -(i128{1} << (TW - 1));
-          pair.si.alpha = rng() % 2 ? t_max - static_cast<i128>(rng() % 4)
-                                    : t_min + static_cast<i128>(rng() % 4);
-          pair.si.beta = rng() % 2 ? t_max : t_min;
-          break;
-        }
-        case 2:  // t just below 0 over the interval
-          pair.si.alpha = -static_cast<i128>(rng() % (std::uint64_t{1} << p.t_frac));
-          pair.si.beta = -static_cast<i128>(rng() % (std::uint64_t{1} << p.t_frac));
-          break;
-        default:  // the real interval
-          break;
-      }
-      ++n_edited;
-    }
+    const ref::SegmentDesc& s = m.curve_segments[pair.seg];
+    fixed::Overflow o0;
+    const ref::PairFrame f = ref::frame_unit(p, s, pair.si, o0);
     for (int r = 0; r < 8; ++r) {
+      Item it{pair.seg, static_cast<int>(rng() % 4), FO, s.frame, {},
+              static_cast<unsigned>(rng() & 1), {}, false};
+      if (FO == 0) it.fo = 8 + static_cast<int>(rng() % (H::kFrameMdFracMax - 7));
+      it.kind = it.kind == 3 ? 0 : it.kind;
       const std::uint64_t full = std::uint64_t{1} << p.n;
       const std::uint64_t edges[] = {0, full, 1, full - 1, full / 2};
       const std::uint64_t mm = r < 2 ? edges[rng() % 5] : rng() % (full + 1);
       fixed::Overflow ovf;
-      Item it{pair.seg, s,  edited, pair.si, mm, static_cast<unsigned>(rng() & 1),
-              ref::candidate_evaluator(p, s, pair.si, mm, ovf), false};
-      it.ovf = ovf.flag;
+      it.in = ref::candidate_inputs(p, f, mm, ovf);
+      if (it.kind >= 1)
+        for (ref::FrameGuide& g : it.fd.guide) g = random_guide(rng);
+      if (it.kind == 2) {
+        it.in.x = sim::random_signed(rng, H::kCandXW);
+        it.in.y = sim::random_signed(rng, H::kCandXW);
+        it.in.t = sim::random_signed(rng, H::kCandTW);
+        it.in.c2t = sim::random_signed(rng, H::kCandTW);
+        it.in.s2t = sim::random_signed(rng, H::kCandTW);
+        it.in.w = sim::random_signed(rng, H::kCandWW);
+        for (i128& a : it.in.a) a = sim::random_signed(rng, H::kCandAW);
+      }
+      fixed::Overflow o2;
+      it.want = ref::candidate_unit(p, it.fd, it.in, it.fo, o2);
+      it.ovf = o2.flag;
+      ++n_kind[it.kind];
       n_sat += it.ovf ? 1 : 0;
-      n_neg += it.want.t < 0 ? 1 : 0;
+      for (const ref::FrameGuide& g : it.fd.guide) {
+        n_arc += g.mode == ref::GuideMode::kArc;
+        n_flat += g.mode == ref::GuideMode::kFlat;
+      }
       items.push_back(it);
     }
   }
 
+  const auto guide_bits = [&](const ref::FrameGuide& g) {
+    sim::Bits b;
+    b.push(g.eta2, RadW);
+    b.push(g.eta, EtaW);
+    b.push(static_cast<i128>(g.mode), 2);
+    return b;
+  };
   sim::Stream<Vrpu_candidate, Item> s{.latency = sim::kSameLatency, .tag_w = 0};  // its own tag
   s.inputs = [&](sim::Inputs& in, Vrpu_candidate& t, const Item& it) {
-    in("m", t.m_i, static_cast<i128>(it.m), p.n + 1)("tag", t.tag_i, it.tag, 1);
-    sim::pair_inputs(in, t, p, it.s, it.si);
+    in("fo", t.fo_i, it.fo, 5)("x", t.x_i, it.in.x, H::kCandXW)("y", t.y_i, it.in.y, H::kCandXW);
+    in("t", t.t_i, it.in.t, H::kCandTW)("c2t", t.c2t_i, it.in.c2t, H::kCandTW);
+    in("s2t", t.s2t_i, it.in.s2t, H::kCandTW)("w", t.w_i, it.in.w, H::kCandWW);
+    in.fields("a", t.a_i, std::vector<i128>{it.in.a[0], it.in.a[1]}, H::kCandAW);
+    in.bits("g1", t.g1_i, guide_bits(it.fd.guide[0])).bits("g2", t.g2_i, guide_bits(it.fd.guide[1]));
+    in.note("g1.mode", std::to_string(static_cast<int>(it.fd.guide[0].mode)))
+        .note("g1.eta", sim::str(it.fd.guide[0].eta))
+        .note("g2.mode", std::to_string(static_cast<int>(it.fd.guide[1].mode)))
+        .note("g2.eta", sim::str(it.fd.guide[1].eta));
+    in("tag", t.tag_i, it.tag, 1);
   };
   s.outputs = [&](sim::Outputs& o, const Vrpu_candidate& t, const Item& it) {
-    o.s("t", t.t_o, it.want.t, TW).vec("X", t.x_o, it.want.X, CW + 3).vec("pr", t.pr_o, it.want.pr, CW + 2);
-    o("md", t.md_o, it.want.md, sim::md_width(p))("ovf", t.ovf_o, it.ovf, 1)("tag", t.tag_o, it.tag, 1);
+    o("md", t.md_o, it.want.md, MdW)("ovf", t.ovf_o, it.ovf, 1)("tag", t.tag_o, it.tag, 1);
   };
-  s.what = [](const Item& it) { return "segment " + std::to_string(it.seg) + (it.edited ? " (edited)" : ""); };
+  s.what = [](const Item& it) {
+    return "segment " + std::to_string(it.seg) +
+           (it.kind == 1 ? " (edited guides)" : it.kind == 2 ? " (random inputs)" : "");
+  };
   return tb.check(items, s,
-                  "metric %d, %ld pairs edited, %ld of them long flat; %ld saturated, %ld with "
-                  "t < 0", METRIC, n_edited, n_long, n_sat, n_neg);
+                  "Fo %d, metric %d: %ld real, %ld with edited guides, %ld random; %ld "
+                  "saturated; %ld arc and %ld flat guides",
+                  FO, METRIC, n_kind[0], n_kind[1], n_kind[2], n_sat, n_arc, n_flat);
 }

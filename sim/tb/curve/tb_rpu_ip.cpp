@@ -1,27 +1,18 @@
-// rpu_ip (unrolled or iterative) against rpu::ref::ip_process, and with -DIP_STEP rpu_ip_step
-// (k at run time) against rpu::ref::ip_step on the model's intermediate states of every k. Real
-// search intervals of curve12, random valid gaps, ready_o honoured (rpu_ip); every state field is
-// compared: τ, lo.t, lo.X, lo.md, hi.md, the overflow bit and the passed-through context (and,
-// for the step, the tag).
+// rpu_ip (unrolled or iterative: frame unit, the two ends, K steps, test point) against
+// rpu::ref::frame_unit + ip_process + test_point_unit. Real search intervals of curve12, random
+// valid gaps, ready_o honoured; every output field is compared: τ, t, X, lo.md, hi.md, the
+// overflow bit and the passed-through context.
 // A quarter of the pairs are edited (curve12 has no flat guide and no far miss): their guides
 // become flat (h from just past the kFlatRatio·L threshold up), arcs or straight, their α, β are
 // drawn over the whole Q(3.FT) range; an eighth of the edited pairs are far misses: the curve's
 // points pushed to one corner of the X range (a long segment, t near −4) and pr(τ) towards the
-// opposite one, so md reaches its top bits. The step's items sometimes enter with lo.md or
-// hi.md replaced (0, the largest value or random): the step takes any state, and the argmin
-// then picks the candidates next to the replaced end.
+// opposite one.
 #include <cmath>
 #include <vector>
 
-#ifdef IP_STEP
-#include "Vrpu_ip_step.h"
-using Dut = Vrpu_ip_step;
-constexpr const char* kName = "rpu_ip_step";
-#else
 #include "Vrpu_ip.h"
 using Dut = Vrpu_ip;
 constexpr const char* kName = "rpu_ip";
-#endif
 #include "tb_ip_common.h"
 
 namespace {
@@ -31,8 +22,8 @@ struct Item {
   ref::SegmentDesc s;  // the segment's descriptor, edited or not
   int edited;          // 0 real, 1 edited guides/interval, 2 far miss
   ref::SearchInterval si;
-  ref::IpState in;    // the state entering the step (IP_STEP only)
-  ref::IpState want;  // the state leaving the step or the process
+  ref::IpState want;  // the process's final state
+  ref::TestPoint tp;  // its test point
   bool ovf;
   std::uint32_t id;
   unsigned tag;
@@ -97,9 +88,8 @@ int main(int argc, char** argv) {
 
   std::vector<Item> items;
   std::uint32_t id = 0;
-  long n_edited = 0, n_far = 0, n_md_top = 0, n_replaced = 0;
+  long n_edited = 0, n_far = 0, n_md_top = 0;
   const int MdW = sim::md_width(p);
-  [[maybe_unused]] const i128 md_max = (i128{1} << MdW) - 1;
   while (static_cast<long>(items.size()) < count) {
     sim::SampledPair pair;
     if (!sim::sample_pred1_pair(sc, m, p, rng, pair)) continue;
@@ -107,52 +97,23 @@ int main(int argc, char** argv) {
     const int edited = edit_pair(p, rng, s, pair.si);
     n_edited += edited != 0;
     n_far += edited == 2;
-#ifdef IP_STEP
-    fixed::Overflow o0;
-    ref::IpState st = ref::ip_start(p, s, pair.si, o0);
-    for (int step = 1; step <= p.K(); ++step) {
-      fixed::Overflow ovf;
-      const ref::IpState next = ref::ip_step(p, s, pair.si, st, ovf);
-      if (rng() % 2 == 0 || step == p.K()) {
-        ref::IpState in = st;
-        if (rng() % (edited == 2 ? 2 : 16) == 0) {  // replace an end's md: the step takes any
-          const unsigned r = static_cast<unsigned>(rng() % 6);
-          i128& md = r % 2 ? in.hi.md : in.lo.md;
-          md = r < 2 ? 0 : r < 4 ? md_max : static_cast<i128>(rng() & static_cast<u128>(md_max));
-          ++n_replaced;
-        }
-        fixed::Overflow ovf2;
-        const ref::IpState want = ref::ip_step(p, s, pair.si, in, ovf2);
-        n_md_top += (want.lo.md >> (MdW - 1)) != 0 || (want.hi.md >> (MdW - 1)) != 0;
-        items.push_back({pair.seg, s, edited, pair.si, in, want, ovf2.flag, id++,
-                         static_cast<unsigned>(rng() & 1)});
-      }
-      st = next;
-    }
-#else
     fixed::Overflow ovf;
-    const ref::IpState want = ref::ip_process(p, s, pair.si, ovf);
+    const ref::PairFrame f = ref::frame_unit(p, s, pair.si, ovf);
+    const ref::IpState want = ref::ip_process(p, s, f, ovf);
+    const ref::TestPoint tp = ref::test_point_unit(p, s, pair.si, want.tau, ovf);
     n_md_top += (want.lo.md >> (MdW - 1)) != 0 || (want.hi.md >> (MdW - 1)) != 0;
-    items.push_back({pair.seg, s, edited, pair.si, {}, want, ovf.flag, id++, 0});
-#endif
+    items.push_back({pair.seg, s, edited, pair.si, want, tp, ovf.flag, id++, 0});
   }
 
-  sim::Stream<Dut, Item> s{.tag_w = 0};  // the step's tag: the item's own
+  sim::Stream<Dut, Item> s{.tag_w = 0};
   s.inputs = [&](sim::Inputs& in, Dut& t, const Item& it) {
     sim::pair_inputs(in, t, p, it.s, it.si);
+    in.bits("frame", t.fr_i, sim::frame_bits(it.s.frame)).bits("fg", t.fg_i, sim::frame_guide_bits(it.s.frame));
     in("ctx", t.ctx_i, it.id, 32);
-#ifdef IP_STEP
-    in("tag", t.tag_i, it.tag, 1)("k", t.k_i, it.in.k + 1, 8).bits("state", t.state_i, sim::pack_state(p, it.in));
-    in.note("in.tau", std::to_string(it.in.tau)).note("in.lo.md", sim::str(it.in.lo.md));
-    in.note("in.hi.md", sim::str(it.in.hi.md));
-#endif
   };
   s.outputs = [&](sim::Outputs& o, const Dut& t, const Item& it) {
-    sim::state_outputs(o, t.state_o, p, it.want);
+    sim::ip_outputs(o, t.state_o, p, it.want, it.tp);
     o("ovf", t.ovf_o, it.ovf, 1)("ctx", t.ctx_o, it.id, 32);
-#ifdef IP_STEP
-    o("tag", t.tag_o, it.tag, 1);
-#endif
   };
   s.what = [](const Item& it) {
     return "segment " + std::to_string(it.seg) + (it.edited == 2 ? " (far miss)" : it.edited ? " (edited)" : "");
@@ -161,10 +122,10 @@ int main(int argc, char** argv) {
   // fills to its depth and ready_o's credit count is tested at its limit.
   s.traffic.valid_at = [](long cycle) { return (cycle >> 11) & 1 ? 100 : 85; };
   s.timeout = 40 * static_cast<long>(items.size()) + 5000;
-#if defined(IP_STEP) || UNROLLED
+#if UNROLLED
   s.latency = sim::kSameLatency;  // pipelines (the iterative form's latency follows the load)
 #endif
-#if !UNROLLED && !defined(IP_STEP)
+#if !UNROLLED
   // Throughput of the iterative form: in a burst (valid_i always high, the start FIFO full since
   // the previous phase issued faster than 1/K), one result per K cycles; counted from 512 cycles
   // into the burst to its end; checked for bursts that had items all along.
@@ -186,8 +147,8 @@ int main(int argc, char** argv) {
 #endif
   if (!tb.run(items, s)) return 1;
   return tb.pass("%s n=%d n1=%d metric %d %s, %.3f items/cycle; pairs edited %ld (far misses %ld), "
-                 "ends' md replaced %ld, results with md's top bit %ld",
+                 "results with md's top bit %ld",
                  kName, IP_N, IP_N1, METRIC, UNROLLED ? "unrolled" : "iterative",
                  static_cast<double>(tb.matched()) / static_cast<double>(tb.cycle()), n_edited,
-                 n_far, n_replaced, n_md_top);
+                 n_far, n_md_top);
 }
