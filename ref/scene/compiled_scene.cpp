@@ -15,18 +15,29 @@ namespace {
 // Builds the segments of one polyline; `kind` is "curves" or "textures" for error paths.
 template <class Polyline>
 void compile_polyline(const Polyline& line, const char* kind, int index, int primitive,
-                      double half_width, const std::string& source,
+                      double half_width, bool round_join, const std::string& source,
                       std::vector<CompiledSegment>& out) {
   const bool planar = std::string_view(kind) == "textures";
+  // A straight polyline ("smooth": false) takes no normals: each segment gets, at both ends, a
+  // normal perpendicular to its own chord, which makes both guides straight (docs/algorithms.md
+  // §1: the reference sphere's centre at infinity).
   const std::vector<Vec3> normals =
-      line.normals.empty() ? derive_normals(line.points, line.closed, planar) : line.normals;
+      !line.smooth ? std::vector<Vec3>{}
+      : line.normals.empty() ? derive_normals(line.points, line.closed, planar) : line.normals;
   const size_t n = line.points.size();
   const size_t segments = line.closed ? n : n - 1;
   for (size_t s = 0; s < segments; ++s) {
     const size_t a = s, b = (s + 1) % n;
     SegmentDefect defect;
     int end = 0;
-    const auto seg = make_segment(line.points[a], line.points[b], normals[a], normals[b], defect, end);
+    Vec3 na, nb;
+    if (line.smooth) {
+      na = normals[a];
+      nb = normals[b];
+    } else {
+      na = nb = chord_perpendicular(line.points[b] - line.points[a], planar);
+    }
+    const auto seg = make_segment(line.points[a], line.points[b], na, nb, defect, end);
     if (!seg) {
       const size_t at = end == 0 ? a : b;
       switch (defect) {
@@ -53,7 +64,7 @@ void compile_polyline(const Polyline& line, const char* kind, int index, int pri
                       "normal has zero length");
       }
     }
-    out.push_back({*seg, primitive, static_cast<int>(s), half_width});
+    out.push_back({*seg, primitive, static_cast<int>(s), half_width, round_join});
   }
 }
 
@@ -67,14 +78,15 @@ CompiledScene compile_scene(const Scene& scene) {
   for (size_t c = 0; c < scene.curves.size(); ++c) {
     const int id = static_cast<int>(out.primitives.size());
     out.primitives.push_back({Primitive::Kind::kCurve, static_cast<int>(c), scene.curves[c].color});
-    compile_polyline(scene.curves[c], "curves", static_cast<int>(c), id, 0.0, scene.source,
+    compile_polyline(scene.curves[c], "curves", static_cast<int>(c), id, 0.0, false, scene.source,
                      out.curve_segments);
   }
   for (size_t t = 0; t < scene.textures.size(); ++t) {
     const auto& tex = scene.textures[t];
     const int id = static_cast<int>(out.primitives.size());
     out.primitives.push_back({Primitive::Kind::kTexture, static_cast<int>(t), tex.color});
-    compile_polyline(tex, "textures", static_cast<int>(t), id, tex.half_width, scene.source,
+    compile_polyline(tex, "textures", static_cast<int>(t), id, tex.half_width, tex.round_join,
+                     scene.source,
                      out.texture_segments);
   }
   out.texture_grid = ClassificationGrid::build(out.texture_segments);

@@ -29,6 +29,7 @@ struct CompiledSegment {
   int primitive = 0;  // id in CompiledScene::primitives
   int index = 0;      // segment number within its curve or texture (from point `index`)
   double half_width = 0.0;  // w_0 (textures only)
+  bool round_join = false;  // textures: "join": "round" (Texture::round_join)
 };
 
 struct CompiledScene {

@@ -1,6 +1,9 @@
 #include "scene/normals.h"
 
 #include <cmath>
+#include <optional>
+
+#include "scene/segment.h"
 
 namespace rpu::scene {
 namespace {
@@ -15,6 +18,12 @@ Vec3 any_perpendicular(const Vec3& T, bool planar) {
 }
 
 }  // namespace
+
+Vec3 chord_perpendicular(const Vec3& d, bool planar) {
+  // The chord's direction first, so that tiny or huge chords keep theirs (segment.h).
+  const std::optional<Vec3> t = unit_direction(d);
+  return t ? any_perpendicular(*t, planar) : Vec3{};
+}
 
 std::vector<Vec3> derive_normals(const std::vector<Vec3>& p, bool closed, bool planar) {
   const size_t n = p.size();

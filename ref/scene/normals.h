@@ -15,4 +15,8 @@ namespace rpu::scene {
 // T × e for the coordinate axis e least aligned with T.
 std::vector<Vec3> derive_normals(const std::vector<Vec3>& points, bool closed, bool planar);
 
+// A unit normal perpendicular to the chord d, as above (within z = 0 when `planar`): at both ends
+// of a segment it makes both guides straight ("smooth": false). Zero when d has no direction.
+Vec3 chord_perpendicular(const Vec3& d, bool planar);
+
 }  // namespace rpu::scene

@@ -30,6 +30,7 @@ struct Curve {
   std::vector<Vec3> normals;  // empty when the file gives none (derived, docs/algorithms.md §1)
   bool closed = false;
   Color color{1.0, 1.0, 1.0};
+  bool smooth = true;  // false: straight segments (every guide straight), the corners kept
 };
 
 // A vector texture on the plane z = 0 (docs/algorithms.md §2). Points and normals have z = 0.
@@ -39,6 +40,11 @@ struct Texture {
   bool closed = false;
   double half_width = 0.0;  // w_0
   Color color{1.0, 1.0, 1.0};
+  bool smooth = true;  // false: straight segments, as for curves
+  // Joins: the seed's rule covers a point only inside some segment's slab (eq 25,
+  // pr1 ∧ (pr2 ∨ pr3)), which leaves a notch outside each bend; round: (pr1 ∧ pr3) ∨ pr2, so
+  // every point's round cap counts (docs/algorithms.md §2).
+  bool round_join = false;
 };
 
 // A parametric patch of docs/algorithms.md §4 (seed 003). A `bezier_set` in the file becomes one

@@ -147,6 +147,7 @@ Camera camera(const Json& j, const Where& w) {
 template <class Polyline>
 void polyline(const Json& j, const Where& w, size_t dims, const char* kind, Polyline& out) {
   if (const Json* c = find_key(j, "closed")) out.closed = boolean(*c, w.key("closed"));
+  if (const Json* sm = find_key(j, "smooth")) out.smooth = boolean(*sm, w.key("smooth"));
 
   const Where wp = w.key("points");
   const Json& pts = required(j, w, "points");
@@ -170,6 +171,9 @@ void polyline(const Json& j, const Where& w, size_t dims, const char* kind, Poly
 
   if (const Json* nrm = find_key(j, "normals")) {
     const Where wn = w.key("normals");
+    if (!out.smooth)
+      wn.fail("normals shape the arcs of a smoothed polyline; with \"smooth\": false every "
+              "segment is straight and takes none");
     if (!nrm->is_array()) wn.fail("expected an array of normals, got " + describe(*nrm));
     if (nrm->size() != n)
       wn.fail("expected one normal per point (" + std::to_string(n) + "), got " +
@@ -198,6 +202,11 @@ Texture texture(const Json& j, const Where& w) {
   t.half_width = coordinate(hw, w.key("half_width"));
   if (!(t.half_width > 0.0))
     w.key("half_width").fail("half_width must be greater than 0, got " + hw.dump());
+  if (const Json* jn = find_key(j, "join")) {
+    if (!jn->is_string() || (jn->get<std::string>() != "seed" && jn->get<std::string>() != "round"))
+      w.key("join").fail("expected \"seed\" or \"round\", got " + describe(*jn));
+    t.round_join = jn->get<std::string>() == "round";
+  }
   return t;
 }
 

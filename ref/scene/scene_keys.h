@@ -24,8 +24,9 @@ using K = std::string_view;
 inline constexpr K kTop[] = {"about", "camera", "background", "curves", "textures", "surfaces",
                              "patches"};
 inline constexpr K kCamera[] = {"eye", "target", "up", "fov_deg", "width", "height"};
-inline constexpr K kCurve[] = {"points", "normals", "closed", "color"};
-inline constexpr K kTexture[] = {"points", "normals", "closed", "half_width", "color"};
+inline constexpr K kCurve[] = {"points", "normals", "closed", "smooth", "color"};
+inline constexpr K kTexture[] = {"points", "normals", "closed", "smooth", "join", "half_width",
+                                  "color"};
 // Surfaces (seed 004): the placement and colour, then the type's own parameters.
 inline constexpr K kEllipsoid[] = {"type", "position", "rotation_deg", "scale", "color",
                                    "a", "b", "c", "y_range"};
