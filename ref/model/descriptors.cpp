@@ -91,6 +91,7 @@ SegmentDesc quantize_segment(const scene::CompiledSegment& cs, const Normalizati
   if (cs.half_width > 0.0) {
     const double w = cs.half_width * norm.scale;
     s.w0_2 = static_cast<i128>(std::llround(w * w));
+    s.round_join = cs.round_join;
   }
   return s;
 }

@@ -67,6 +67,7 @@ struct SegmentDesc {
   int inv_s = 0;
   GuideDesc guide[2];
   i128 w0_2 = 0;    // texture half-width², LSB² (textures only)
+  bool round_join = false;  // textures: covers = (pr1 ∧ pr3) ∨ pr2 (else the seed's eq 25)
   FrameDesc frame;  // the chord's 2-D frame (curves only)
   std::int32_t primitive = 0;
 };

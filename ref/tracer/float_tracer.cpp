@@ -164,13 +164,16 @@ PairResult ideal_pair(const CameraFrame& cam, const Segment& s, int i, int j) {
 
 bool texture_covers(const CompiledSegment& cs, const Vec3& p0) {
   const Segment& s = cs.geom;
+  const double w2 = cs.half_width * cs.half_width;
+  // pr2: round caps at the end points (eq 10).
+  const bool pr2 = length_squared(s.p1 - p0) <= w2 || length_squared(s.p2 - p0) <= w2;
+  // A round join counts the caps outside the slab too: (pr1 ∧ pr3) ∨ pr2.
+  if (pr2 && cs.round_join) return true;
   // pr1: p0 between the planes through p1 and p2 perpendicular to d (the chord midpoint's signs,
   // seed 001 eqs 7–9; a point on either plane counts as between).
   const double f1 = dot(p0 - s.p1, s.d), f2 = dot(p0 - s.p2, s.d);
   if (!(f1 >= 0.0 && f2 <= 0.0)) return false;
-  const double w2 = cs.half_width * cs.half_width;
-  // pr2: round caps at the end points (eq 10).
-  if (length_squared(s.p1 - p0) <= w2 || length_squared(s.p2 - p0) <= w2) return true;
+  if (pr2) return true;
   // pr3: the curve point on the guide line through p0 within w_0 (eqs 15–24).
   const double t_hat = f1 / s.L2;
   return length_squared(scene::curve_point(s, t_hat) - p0) <= w2;

@@ -6,7 +6,8 @@
 //   t̂      = chord(clamp(r1·d, 0, L2))                          rpu_chord, Q(3.FT)
 //   X      = s(t̂) = curve_point(t̂, g1(t̂), g2(t̂))               rpu_guide_pair, rpu_curve_point
 //   pr3    = |X − p0|² ≤ w0_2                                    exact
-//   covers = pr1 ∧ (pr2 ∨ pr3)
+//   covers = pr1 ∧ (pr2 ∨ pr3)           the seed's join (eq 25), round_join_i = 0
+//          = (pr1 ∧ pr3) ∨ pr2           a round join, round_join_i = 1
 // ovf_o is the pair's sticky overflow bit as the twin sets it: the chord parameter saturated
 // (never for a descriptor: the clamped dot gives t̂ ∈ [0, 1]) or an arc guide's radicand did.
 // Every output is computed for every operand, as in the twin (t̂, X and pr3 also where pr1 fails).
@@ -64,18 +65,20 @@ module rpu_texture #(
   input  wire [GdW-1:0]      g1_i,      // guide of end 1 (rpu_guide_desc.vh)
   input  wire [GdW-1:0]      g2_i,      // guide of end 2
   input  wire [W02W-1:0]     w0_2_i,    // texture half-width², LSB², unsigned
+  input  wire                round_join_i,  // 1: the caps count outside the slab too
   input  wire [TagW-1:0]     tag_i,
   output wire                valid_o,
   output wire                pr1_o,
   output wire                pr2_o,
   output wire                pr3_o,
-  output wire                covers_o,  // pr1 ∧ (pr2 ∨ pr3)
+  output wire                covers_o,  // pr1 ∧ (pr2 ∨ pr3), or (pr1 ∧ pr3) ∨ pr2 (round join)
   output wire [TW-1:0]       t_o,       // t̂, Q(3.FT), signed
   output wire [3*XW-1:0]     x_o,       // X = s(t̂), {z, y, x}, LSB, signed each
   output wire                ovf_o,     // sticky overflow bit of the pair
   output wire [TagW-1:0]     tag_o
 );
   localparam integer CW   = CoordW;
+  localparam integer TgW  = TagW + 1;        // the side band inside: {round join, tag}
   localparam integer R1W  = CW + 1;          // r1 = p0 − p1
   localparam integer R2W  = CW + 2;          // r2 = r1 − d
   localparam integer F1PW = R1W + DW;        // r1_k·d_k
@@ -147,12 +150,12 @@ module rpu_texture #(
   wire [3*R2W-1:0]  s1_r2_q;
   wire [CtxW-1:0]   s1_ctx_q;
   wire [InvW+6:0]   s1_inv_q;
-  wire [TagW-1:0]   s1_tag_q;
+  wire [TgW-1:0]   s1_tag_q;
   wire              s1_valid_q;
-  rpu_stage #(.W(3*R1W + 3*R2W + CtxW + InvW + 7 + TagW)) u_s1 (
+  rpu_stage #(.W(3*R1W + 3*R2W + CtxW + InvW + 7 + TgW)) u_s1 (
     .clk_i, .rst_ni, .valid_i,
     .d_i({r1v, r2v, w0_2_i, p0_i, p1_i, d_i, g1_i[GdUO +: GdUW], g2_i[GdUO +: GdUW], l2_i,
-          g1_i[GdShapeO +: GsW], g2_i[GdShapeO +: GsW], inv_s_i, inv_m_i, tag_i}),
+          g1_i[GdShapeO +: GsW], g2_i[GdShapeO +: GsW], inv_s_i, inv_m_i, round_join_i, tag_i}),
     .valid_o(s1_valid_q), .q_o({s1_r1_q, s1_r2_q, s1_ctx_q, s1_inv_q, s1_tag_q}));
   wire [3*DW-1:0] s1_d = s1_ctx_q[6*UW + L2W + 2*GsW +: 3*DW];
 
@@ -191,7 +194,7 @@ module rpu_texture #(
   localparam integer HiW = CtxW - LoW;
   localparam integer DlW = InvW + 7 + LoW;      // {inv, ctx_lo}
   localparam integer Dl  = LF + 2;
-  localparam integer D2W = TagW + HiW;          // {tag, ctx_hi}
+  localparam integer D2W = TgW + HiW;          // {tag, ctx_hi}
   localparam integer D2  = LF + 2 + LCh;
   reg [Dl*DlW-1:0] dl_q;
   reg [D2*D2W-1:0] d2_q;
@@ -265,11 +268,11 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The chord parameter t̂; the pair's context rides in the chord's tag.
   // ---------------------------------------------------------------------------------------------
-  localparam integer ChTagW = 2 + LoW;
+  localparam integer ChTgW = 2 + LoW;
   wire              ch_valid, ch_ovf;
   wire [TW-1:0]     ch_t;
-  wire [ChTagW-1:0] ch_tag_out;
-  rpu_chord #(.DotW(DotW), .InvW(InvW), .TFrac(TFrac), .ShW(7), .TagW(ChTagW)) u_chord (
+  wire [ChTgW-1:0] ch_tag_out;
+  rpu_chord #(.DotW(DotW), .InvW(InvW), .TFrac(TFrac), .ShW(7), .TagW(ChTgW)) u_chord (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .valid_i(s3_valid_q),
@@ -282,7 +285,7 @@ module rpu_texture #(
     .ovf_o  (ch_ovf),
     .tag_o  (ch_tag_out)
   );
-  wire [TagW-1:0]     ch_tag;
+  wire [TgW-1:0]     ch_tag;
   wire                ch_pr1, ch_pr2;
   wire [W02W-1:0]     ch_w02;
   wire [3*CW-1:0]     ch_p0, ch_p1;
@@ -297,14 +300,14 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The two guides at t̂; what the curve point and the end need rides in guide 1's tag.
   // ---------------------------------------------------------------------------------------------
-  localparam integer G1TagW = TagW + 2 + W02W + 6 * CW + 3 * DW + 6 * UW + TW + 1;
+  localparam integer G1TgW = TgW + 2 + W02W + 6 * CW + 3 * DW + 6 * UW + TW + 1;
   localparam integer RadW   = 2 * CW + 10;
   wire              g1_valid, g1_ovf;
   wire [GW-1:0]     g1, g2;
   wire [TFrac-2:0]  w_unused;
-  wire [G1TagW-1:0] g1_tag_out;
+  wire [G1TgW-1:0] g1_tag_out;
   // One texture item per cycle: the pair squares h itself (HhIn = 0).
-  rpu_guide_pair #(.CoordW(CW), .TFrac(TFrac), .SqrtW(SqrtW), .HhIn(0), .TagW(G1TagW)) u_guides (
+  rpu_guide_pair #(.CoordW(CW), .TFrac(TFrac), .SqrtW(SqrtW), .HhIn(0), .TagW(G1TgW)) u_guides (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .valid_i(ch_valid),
@@ -322,7 +325,7 @@ module rpu_texture #(
     .ovf_o  (g1_ovf),
     .tag_o  (g1_tag_out)
   );
-  wire [TagW-1:0]  gd_tag;
+  wire [TgW-1:0]  gd_tag;
   wire             gd_pr1, gd_pr2;
   wire [W02W-1:0]  gd_w02;
   wire [3*CW-1:0]  gd_p0, gd_p1;
@@ -336,11 +339,11 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The curve point X = s(t̂).
   // ---------------------------------------------------------------------------------------------
-  localparam integer CpTagW = TagW + 2 + W02W + 3 * CW + TW + 1;
+  localparam integer CpTgW = TgW + 2 + W02W + 3 * CW + TW + 1;
   wire              cp_valid;
   wire [3*XW-1:0]   cp_x;
-  wire [CpTagW-1:0] cp_tag_out;
-  rpu_curve_point #(.CoordW(CW), .TFrac(TFrac), .UnitFrac(UnitFrac), .TagW(CpTagW)) u_cp (
+  wire [CpTgW-1:0] cp_tag_out;
+  rpu_curve_point #(.CoordW(CW), .TFrac(TFrac), .UnitFrac(UnitFrac), .TagW(CpTgW)) u_cp (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .valid_i(g1_valid),
@@ -356,7 +359,7 @@ module rpu_texture #(
     .x_o    (cp_x),
     .tag_o  (cp_tag_out)
   );
-  wire [TagW-1:0]  cp_tag;
+  wire [TgW-1:0]  cp_tag;
   wire             cp_pr1, cp_pr2;
   wire [W02W-1:0]  cp_w02;
   wire [3*CW-1:0]  cp_p0;
@@ -368,7 +371,7 @@ module rpu_texture #(
   // Stage E1: e = X − p0 (exact: |X| < 2^(CW+2), |p0| ≤ 2^(CW−1)).
   // ---------------------------------------------------------------------------------------------
   // The result fields that ride to the end: {tag, pr1, pr2, w0_2, t̂, X, ovf}.
-  localparam integer ResW = TagW + 2 + W02W + TW + 3 * XW + 1;
+  localparam integer ResW = TgW + 2 + W02W + TW + 3 * XW + 1;
   wire [3*EW-1:0] e_v;
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_e
@@ -413,7 +416,7 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // Stage E4: pr3 = |e|² ≤ w0_2 (exact), covers; the outputs.
   // ---------------------------------------------------------------------------------------------
-  wire [TagW-1:0]  r_tag;
+  wire [TgW-1:0]  r_tag;
   wire             r_pr1, r_pr2;
   wire [W02W-1:0]  r_w02;
   wire [TW-1:0]    r_t;
@@ -424,9 +427,11 @@ module rpu_texture #(
   wire pr3 = ~m3[ESW-1];
   // Loaded only with a valid pair: the fields that only ride along leave flip-flops, not the
   // shift-register LUTs Yosys would pack their plain stages into.
+  wire r_round = r_tag[TgW-1];  // the join: {round join, tag}
+  wire covers  = r_round ? (r_pr1 & pr3) | r_pr2 : r_pr1 & (r_pr2 | pr3);
   rpu_stage #(.W(4 + TW + 3*XW + 1 + TagW), .Hold(1)) u_out (
     .clk_i, .rst_ni, .valid_i(e3_valid_q),
-    .d_i({r_pr1, r_pr2, pr3, r_pr1 & (r_pr2 | pr3), r_t, r_x, r_ovf, r_tag}),
+    .d_i({r_pr1, r_pr2, pr3, covers, r_t, r_x, r_ovf, r_tag[TagW-1:0]}),
     .valid_o, .q_o({pr1_o, pr2_o, pr3_o, covers_o, t_o, x_o, ovf_o, tag_o}));
 
   wire unused_bits = ^w_unused;

@@ -1,7 +1,8 @@
 // A segment descriptor in rpu_top's segment RAM (SegmentDesc, ref/model/descriptors.h; formats:
 // docs/fixed-point.md; the harness packs it in sim/harness/rtl_types.cpp), LSB first:
-// {tex, prim, p1, d, c0, R2 | w0², L², inv_m, inv_s, g1, g2, frame, fg1, fg2}. A texture's c0,
-// frame and frame guides are unused (0) and its R2 field holds w0². Included inside rpu_top
+// {tex, prim, p1, d, c0, R2 | w0², L², inv_m, inv_s, g1, g2, frame, fg1, fg2}. A texture's frame
+// and frame guides are unused (0), its R2 field holds w0² and its c0 field its join: bit 0 is 1
+// for a round join, the rest 0. Included inside rpu_top
 // after rpu_guide_desc.vh; each offset is defined from the previous one.
   localparam integer SegFgO   = 0;                         // frame guides {fg1, fg2} (rpu_ip)
   localparam integer SegFgW   = 2 * `RPU_FGDW;

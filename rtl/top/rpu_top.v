@@ -55,7 +55,8 @@ module rpu_top #(
   input  wire                seg_we_i,
   input  wire [SegAddrW-1:0] seg_addr_i,
   input  wire [SegW-1:0]     seg_data_i,   // {tex, prim, p1, d, c0, R2 | w0_2, L2, inv_m, inv_s,
-                                           //  g1, g2}; a texture's c0 is unused, R2 holds w0_2
+                                           //  g1, g2}; a texture's R2 holds w0_2, its c0 bit 0
+                                           //  the join (1: round)
   // Work items.
   input  wire                item_valid_i,
   output wire                item_ready_o,
@@ -267,7 +268,8 @@ module rpu_top #(
   rpu_ray_plane #(.CoordW(CoordW), .DirFrac(DirFrac), .EdgeFrac(EdgeFrac),
                   .TagW(RpTagW)) u_ray_plane (
     .clk_i, .rst_ni, .valid_i(rg_valid && sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
-    .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2}),
+    .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2,
+                         sd_c0[0]}),
     .valid_o(rp_valid), .p0_valid_o(rp_p0_valid), .p0_o(rp_p0), .depth_o(rp_depth),
     .tag_o(rp_tag));
 
@@ -281,7 +283,7 @@ module rpu_top #(
     .d_i(rp_tag[RpDO +: SegDW]), .l2_i(rp_tag[RpL2O +: SegL2W]),
     .inv_m_i(rp_tag[RpInvMO +: SegInvMW]), .inv_s_i(rp_tag[RpInvSO +: SegInvSW]),
     .g1_i(rp_tag[RpGO + GdW +: GdW]), .g2_i(rp_tag[RpGO +: GdW]),
-    .w0_2_i(rp_tag[RpW02O +: SegR2W]),
+    .w0_2_i(rp_tag[RpW02O +: SegR2W]), .round_join_i(rp_tag[RpJoinO]),
     .tag_i({rp_tag[RpItO +: ItW], rp_tag[RpPrimO +: PrimW], rp_p0_valid, rp_depth}),
     .valid_o(tx_valid), .pr1_o(tx_pr1_unused), .pr2_o(tx_pr2_unused), .pr3_o(tx_pr3_unused),
     .covers_o(tx_covers), .t_o(tx_t), .x_o(tx_x), .ovf_o(tx_ovf), .tag_o(tx_tag));

@@ -56,8 +56,9 @@
   localparam integer CtItO    = CtPrimO + PrimW;
   localparam integer CapTagW  = CtItO + ItW;
 
-  // Beside the ray/plane unit: {item, prim, p1, d, L², inv_m, inv_s, g1, g2, w0²}.
-  localparam integer RpW02O   = 0;
+  // Beside the ray/plane unit: {item, prim, p1, d, L², inv_m, inv_s, g1, g2, w0², round join}.
+  localparam integer RpJoinO  = 0;                         // 1: round join (c0's bit 0)
+  localparam integer RpW02O   = RpJoinO + 1;
   localparam integer RpGO     = RpW02O + SegR2W;           // both guides, {g1, g2}
   localparam integer RpInvSO  = RpGO + 2 * GdW;
   localparam integer RpInvMO  = RpInvSO + SegInvSW;

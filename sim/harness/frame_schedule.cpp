@@ -61,7 +61,9 @@ Bits pack_segment(const ref::HwParams& p, const ref::SegmentDesc& s, bool textur
   d.add(s.primitive, TopWidths::kPrimW);
   d.add3(s.p1.x, s.p1.y, s.p1.z, w.CW);
   d.add3(s.d.x, s.d.y, s.d.z, w.DW);
-  d.add3(texture ? 0 : s.c0.x, texture ? 0 : s.c0.y, texture ? 0 : s.c0.z, w.CW);
+  // A texture's c0 is unused: its x holds the join (1: round), the bit rpu_texture reads.
+  d.add3(texture ? (s.round_join ? 1 : 0) : s.c0.x, texture ? 0 : s.c0.y, texture ? 0 : s.c0.z,
+         w.CW);
   d.add(texture ? s.w0_2 : s.R2, w.R2W);  // a texture's w0_2 rides in the R2 field
   d.add(s.L2, w.L2W);
   d.add(s.inv_m, p.inv_w);

@@ -43,7 +43,12 @@ add_test(NAME rtl_compare_pixel_edge COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FIL
          "-DARGS=compare;${PROJECT_SOURCE_DIR}/tests/scenes/pixel_edge.json;--out;${RPU_CMP_OUT}/pixel_edge"
          -DEXPECT_RC=0 "-DEXPECT_ERR=rtl vs ref 0 px, ref vs float-ip 0 px;PASS: report" -DNOT_ERR=warning
          -P ${RPU_RUN})
-list(APPEND rtl_tests rtl_compare_far_camera rtl_compare_pixel_edge)
+# Round texture joins and a straight curve ("join": "round", "smooth": false) through the RTL.
+add_test(NAME rtl_compare_star_joins COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;${PROJECT_SOURCE_DIR}/tests/scenes/star_joins.json;--out;${RPU_CMP_OUT}/star_joins"
+         -DEXPECT_RC=0 "-DEXPECT_ERR=rtl vs ref 0 px, ref vs float-ip 0 px;PASS: report"
+         -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_compare_far_camera rtl_compare_pixel_edge rtl_compare_star_joins)
 
 # The main job's command at a small size: every scene compared concurrently, the index written.
 add_test(NAME rtl_demo COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>

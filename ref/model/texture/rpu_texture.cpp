@@ -28,7 +28,8 @@ TextureOut texture_unit(const HwParams& p, const SegmentDesc& s, const WVec3& p0
   o.X = curve_point_unit(p, s, o.t, g.g1, g.g2);
   const WVec3 e = o.X - p0;
   o.pr3 = dot(e, e) <= s.w0_2;
-  o.covers = o.pr1 && (o.pr2 || o.pr3);
+  // The seed's join (eq 25) or the round one (docs/algorithms.md §2).
+  o.covers = s.round_join ? (o.pr1 && o.pr3) || o.pr2 : o.pr1 && (o.pr2 || o.pr3);
   return o;
 }
 

@@ -9,7 +9,7 @@ namespace rpu::ref {
 
 struct TextureOut {
   bool pr1 = false, pr2 = false, pr3 = false;
-  bool covers = false;  // pr1 ∧ (pr2 ∨ pr3)
+  bool covers = false;  // pr1 ∧ (pr2 ∨ pr3); with a round join (pr1 ∧ pr3) ∨ pr2
   i128 t = 0;
   WVec3 X;
 };

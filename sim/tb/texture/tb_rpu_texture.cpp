@@ -83,7 +83,10 @@ int main(int argc, char** argv) {
   const auto add_desc = [&](int k, size_t seg, const ref::SegmentDesc& s, int i, int j,
                             Source src, const ref::WVec3& p0) {
     fixed::Overflow ovf;
-    Item it{k, seg, s, i, j, src, p0, ref::texture_unit(p, s, p0, ovf), false};
+    // Every other pair with a round join (the same geometry, the other covering rule).
+    ref::SegmentDesc joined = s;
+    joined.round_join = items.size() % 2 == 1;
+    Item it{k, seg, joined, i, j, src, p0, ref::texture_unit(p, joined, p0, ovf), false};
     it.ovf = ovf.flag;
     items.push_back(it);
   };
@@ -230,7 +233,7 @@ int main(int argc, char** argv) {
   sim::Tally by_src(kSourceName, {"pairs", "covers", "pr1", "pr2", "pr3", "pr1 ∧ ¬pr3"});
   sim::Tally by_scene(kScenes, {"pairs"});
   long n_edge_out = 0, n_edge_in = 0, n_ovf = 0, n_clamp_lo = 0, n_clamp_hi = 0, n_plane_eq = 0,
-       n_w0_eq = 0;
+       n_w0_eq = 0, n_round_cap = 0;
   for (const Item& it : items) {
     const ref::TextureOut& w = it.want;
     const ref::SegmentDesc& s = it.desc;
@@ -240,6 +243,7 @@ int main(int argc, char** argv) {
     by_scene.add(it.scene, 1);
     n_edge_out += w.pr1 && !w.pr3 && e2 <= 4 * s.w0_2;  // just outside the stroke
     n_edge_in += w.pr1 && w.pr3 && 4 * e2 >= s.w0_2;     // just inside it
+    n_round_cap += s.round_join && w.pr2 && !w.pr1;      // a cap outside the slab: the join
     n_ovf += it.ovf;
     const ref::WVec3 r1{it.p0.x - s.p1.x, it.p0.y - s.p1.y, it.p0.z - s.p1.z};
     const i128 f1 = r1.x * s.d.x + r1.y * s.d.y + r1.z * s.d.z;
@@ -252,11 +256,12 @@ int main(int argc, char** argv) {
   }
   const long n_covers = by_src.total(1);
   if (n_covers < count / 20 || n_edge_out < count / 50 || n_clamp_lo == 0 || n_clamp_hi == 0 ||
-      n_ovf == 0 || n_plane_eq == 0 || n_w0_eq == 0) {
+      n_ovf == 0 || n_plane_eq == 0 || n_w0_eq == 0 || n_round_cap < count / 1000) {
     return tb.fail("the vectors are too weak: %ld covers, %ld pr1 ∧ ¬pr3 near the edge, %ld / "
-                   "%ld clamped low / high, %ld overflows, %ld / %ld equality cases of %zu",
+                   "%ld clamped low / high, %ld overflows, %ld / %ld equality cases, %ld round "
+                   "caps outside the slab of %zu",
                    n_covers, n_edge_out, n_clamp_lo, n_clamp_hi, n_ovf, n_plane_eq, n_w0_eq,
-                   items.size());
+                   n_round_cap, items.size());
   }
 
   sim::Stream<Vrpu_texture, Item> s{.latency = ref::texture_latency(p)};
@@ -267,7 +272,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 2; ++k) {
       sim::guide_input(in, k ? "g2" : "g1", k ? t.g2_i : t.g1_i, sim::tb_params(), d.guide[k]);
     }
-    in("w0_2", t.w0_2_i, d.w0_2, kW02w);
+    in("w0_2", t.w0_2_i, d.w0_2, kW02w)("round_join", t.round_join_i, d.round_join ? 1 : 0, 1);
   };
   s.outputs = [](sim::Outputs& o, const Vrpu_texture& t, const Item& it) {
     const ref::TextureOut& w = it.want;
