@@ -1,5 +1,7 @@
 #include "hw_flags.h"
 
+#include <charconv>
+
 #include "common/error.h"
 
 namespace rpu::app {
@@ -10,7 +12,8 @@ using ref::HwParamKind;
 HwFlags::HwFlags() {
   for (const HwParamInfo& d : ref::hw_param_table()) {
     value_.push_back(d.def);
-    text_.push_back(d.kind == HwParamKind::kChoice ? d.text(d.def) : std::string());
+    // Choices and ranges with a named value are read as text: a name or (ranges) an integer.
+    text_.push_back(d.kind != HwParamKind::kRange ? d.text(d.def) : std::string());
   }
 }
 
@@ -19,7 +22,7 @@ void HwFlags::add_to(CLI::App& app) {
   for (size_t k = 0; k < table.size(); ++k) {
     const HwParamInfo& d = table[k];
     const std::string flag(d.flag), help(d.meaning);
-    if (d.kind == HwParamKind::kChoice)
+    if (d.kind != HwParamKind::kRange)
       app.add_option(flag, text_[k], help)->capture_default_str();
     else
       app.add_option(flag, value_[k], help)->capture_default_str();
@@ -31,14 +34,23 @@ ref::HwParams HwFlags::params() const {
   const auto& table = ref::hw_param_table();
   for (size_t k = 0; k < table.size(); ++k) {
     const HwParamInfo& d = table[k];
-    if (d.kind != HwParamKind::kChoice) {
+    if (d.kind == HwParamKind::kRange) {
       d.set(p, value_[k]);
       continue;
     }
-    const ref::HwChoice* c = d.choice(text_[k]);
-    if (!c)
-      throw Error(std::string(d.flag), "must be " + d.choice_list() + ", got '" + text_[k] + "'");
-    d.set(p, c->value);
+    if (const ref::HwChoice* c = d.choice(text_[k])) {
+      d.set(p, c->value);
+      continue;
+    }
+    int v = 0;
+    const char* b = text_[k].data();
+    const char* e = b + text_[k].size();
+    const auto [end, ec] = std::from_chars(b, e, v);
+    if (d.kind == HwParamKind::kChoice || ec != std::errc() || end != e || b == e)
+      throw Error(std::string(d.flag), "must be " + d.choice_list() +
+                                           (d.kind == HwParamKind::kChoice ? "" : " or an integer") +
+                                           ", got '" + text_[k] + "'");
+    d.set(p, v);  // validate() judges the range
   }
   p.validate();
   return p;

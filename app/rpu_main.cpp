@@ -177,6 +177,7 @@ struct CommonFlags {
     tracer::FloatOptions o;
     o.n = p.n;
     o.n1 = p.n1;
+    o.surf_n1_first = p.surf_n1_first;
     o.threads = static_cast<int>(threads);
     o.binning = !no_binning;
     o.grid = !no_grid;

@@ -77,8 +77,9 @@ json run_config(SweepRun& run, const SweepConfig& c) {
       const image::Frame r = ref::render_ref(sc, model, ro, &rs);
       const std::string key = fmt::format("{}@{}x{}", k, s.width, s.height);
       const image::Frame& fip =
-          run.floats.get(sc, key, tracer::Method::kIterative, c.params.n, c.params.n1);
-      const image::Frame& ff = run.floats.get(sc, key, tracer::Method::kIdeal, 0, 0);
+          run.floats.get(sc, key, tracer::Method::kIterative, c.params.n, c.params.n1,
+                         c.params.surf_n1_first);
+      const image::Frame& ff = run.floats.get(sc, key, tracer::Method::kIdeal, 0, 0, 0);
       const long a = static_cast<long>(image::count_differing_pixels(r, fip));
       const long b = static_cast<long>(image::count_differing_pixels(r, ff));
       scenes[s.scenes[k].label] = {{"pixels", s.width * s.height}, {"ref_vs_float_ip", a},

@@ -5,9 +5,10 @@
 namespace rpu::app {
 
 const image::Frame& FloatCache::get(const scene::CompiledScene& scene, const std::string& key,
-                                    tracer::Method m, int n, int n1) {
+                                    tracer::Method m, int n, int n1, int surf_n1_first) {
   const bool ideal = m == tracer::Method::kIdeal;
-  const std::string k = fmt::format("{}|{}|{}|{}", key, ideal, ideal ? 0 : n, ideal ? 0 : n1);
+  const std::string k = fmt::format("{}|{}|{}|{}|{}", key, ideal, ideal ? 0 : n, ideal ? 0 : n1,
+                                    ideal ? 0 : surf_n1_first);
   {
     std::lock_guard<std::mutex> lock(mu_);
     const auto it = frames_.find(k);
@@ -17,6 +18,7 @@ const image::Frame& FloatCache::get(const scene::CompiledScene& scene, const std
   fo.method = m;
   fo.n = ideal ? 16 : n;
   fo.n1 = ideal ? 2 : n1;
+  fo.surf_n1_first = ideal ? 0 : surf_n1_first;
   fo.threads = 1;
   auto frame = std::make_shared<const image::Frame>(tracer::render_float(scene, fo));
   std::lock_guard<std::mutex> lock(mu_);

@@ -1,5 +1,5 @@
 // The float renders of a sweep, shared between its configurations: `float` depends on no
-// hardware parameter and `float-ip` only on (n, n1), so each is rendered once per scene and
+// hardware parameter and `float-ip` only on (n, n1, surf_n1_first), so each is rendered once per scene and
 // resolution however many configurations compare against it.
 #pragma once
 
@@ -17,10 +17,10 @@ namespace rpu::app {
 class FloatCache {
  public:
   // The frame of `scene` (known to the cache as `key`: the scene and its resolution) rendered
-  // with method m, at (n, n1) for the iterative process. Thread-safe; two threads asking for a
+  // with method m, at (n, n1, surf_n1_first) for the iterative process. Thread-safe; two threads asking for a
   // frame not yet there may both render it, and the first stored is kept.
   const image::Frame& get(const scene::CompiledScene& scene, const std::string& key,
-                          tracer::Method m, int n, int n1);
+                          tracer::Method m, int n, int n1, int surf_n1_first);
 
  private:
   std::mutex mu_;

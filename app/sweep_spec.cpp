@@ -85,7 +85,8 @@ std::pair<int, int> read_size(const json& v, const std::string& where) {
 void set_param(ref::HwParams& p, const std::string& key, const json& v, const std::string& where) {
   const ref::HwParamInfo* d = ref::find_hw_param_key(key);
   if (!d) throw Error(where, "unknown hardware parameter (" + ref::hw_param_keys() + ")");
-  if (d->kind == ref::HwParamKind::kChoice) {
+  if (d->kind == ref::HwParamKind::kChoice ||
+      (d->kind == ref::HwParamKind::kRangeOrOff && v.is_string())) {  // a named value
     if (!v.is_string()) throw Error(where, "must be a string, got " + describe(v));
     const ref::HwChoice* c = d->choice(v.get<std::string>());
     if (!c) throw Error(where, "must be " + d->choice_list());

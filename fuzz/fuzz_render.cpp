@@ -196,6 +196,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fo.method = rpu::tracer::Method::kIterative;
     fo.n = d.n;
     fo.n1 = d.n1;
+    fo.surf_n1_first = hw.surf_n1_first;
     fo.threads = 1;
     const rpu::image::Frame ip = rpu::tracer::render_float(sc, fo);
     fo.method = rpu::tracer::Method::kIdeal;

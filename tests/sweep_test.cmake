@@ -241,19 +241,19 @@ elseif(MODE STREQUAL "resume_content")
     message(FATAL_ERROR "FAILED: results of the old scene content were reused")
   endif()
 elseif(MODE STREQUAL "surface_params")
-  # surf_w and angle_w are grid keys like the others (the table of hardware parameters): both
-  # configurations run on a surface scene, each row with its own surf_w and angle_w, and an
-  # angle_w past surf_w + 10 is an invalid row naming --angle-w.
-  file(WRITE ${OUT}/sweep.json "{\"scenes\": [\"builtin:surf_spiral\"], \"resolution\": [8, 8], \"grid\": {\"surf_w\": [16, 24], \"angle_w\": [16, 32]}, \"rtl\": false}\n")
+  # surf_w, angle_w and surf_n1_first are grid keys like the others (the table of hardware
+  # parameters): every configuration runs on a surface scene, each row with its own values, an
+  # angle_w past surf_w + 10 is an invalid row naming --angle-w, and the seed's search is named.
+  file(WRITE ${OUT}/sweep.json "{\"scenes\": [\"builtin:surf_spiral\"], \"resolution\": [8, 8], \"grid\": {\"surf_w\": [16, 24], \"angle_w\": [16, 32], \"surf_n1_first\": [\"seed\", 6]}, \"rtl\": false}\n")
   run_rpu(0 sweep ${OUT}/sweep.json --out ${OUT}/out --no-yosys)
   set(OUT ${OUT}/out)
   read_csv()
-  if(NOT header MATCHES ",ip,surf_w,angle_w,K,")
-    message(FATAL_ERROR "FAILED: no surf_w, angle_w columns after ip: ${header}")
+  if(NOT header MATCHES ",ip,surf_w,angle_w,surf_n1_first,K,")
+    message(FATAL_ERROR "FAILED: no surf_w, angle_w, surf_n1_first columns after ip: ${header}")
   endif()
-  foreach(want "ok,16,2,[^;]*,unrolled,16,16,8," "ok,16,2,[^;]*,unrolled,24,16,8,"
-               "ok,16,2,[^;]*,unrolled,24,32,8,"
-               "invalid,16,2,[^;]*,unrolled,16,32,8,[^;]*--angle-w: angle_w = 32 needs more CORDIC")
+  foreach(want "ok,16,2,[^;]*,unrolled,16,16,0,8," "ok,16,2,[^;]*,unrolled,24,16,6,8,"
+               "ok,16,2,[^;]*,unrolled,24,32,0,8,"
+               "invalid,16,2,[^;]*,unrolled,16,32,6,8,[^;]*--angle-w: angle_w = 32 needs more CORDIC")
     if(NOT rows MATCHES "(^|;)[0-9a-f]+,${want}")
       message(FATAL_ERROR "FAILED: no row /${want}/: ${rows}")
     endif()

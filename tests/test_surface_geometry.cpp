@@ -281,7 +281,10 @@ struct RayCase {
 
 SurfaceRayHit trace(const CompiledSurface& cs, const RayCase& r, Method m, int n = 24, int n1 = 4) {
   const SurfaceGeometry g(cs.surface);
-  return tracer::trace_surface(cs, g, r.eye, r.dir, m, n, n1);
+  ref::HwParams schedule;  // the default first step, then n1 per step
+  schedule.n = n;
+  schedule.n1 = n1;
+  return tracer::trace_surface(cs, g, r.eye, r.dir, m, schedule);
 }
 
 // The IP's hit is the start of its final interval: at most one final interval (2^−n of the

@@ -191,6 +191,12 @@ std::string HwParams::describe() const {
     if (d.id == HwParamId::n1)  // what n and n1 make
       s += fmt::format("{:<10} = {}\n{:<10} = {} sub-intervals, {} candidate points ({} new after "
                        "the first step)\n", "K", K(), "per step", J(), J() + 1, J() - 1);
+    if (d.id == HwParamId::surf_n1_first) {  // the surfaces' schedule it makes
+      std::string bits;
+      for (int k = 1; k <= surface_steps(); ++k) bits += fmt::format("{}{}", k > 1 ? "," : "", surface_step_bits(k));
+      s += fmt::format("{:<10} = {} (bits per step), {} indicator evaluations per work item\n",
+                       "surf steps", bits, surface_evaluations());
+    }
   }
   return s;
 }

@@ -40,6 +40,24 @@ struct HwParams {
   int K() const { return n / n1; }
   int J() const { return 1 << n1; }
 
+  // Surfaces: the steps of the sign search (docs/surfaces.md, "The search on a piece"). Step 1
+  // takes surf_n1_first bits (seed: n1; at most n, so a short n takes all its bits in step 1),
+  // each later step n1 and the last one what remains of n: surface_steps() steps, step k
+  // dividing its interval into 2^surface_step_bits(k).
+  int surface_first_bits() const { return surf_n1_first == 0 ? n1 : std::min(surf_n1_first, n); }
+  int surface_steps() const { return 1 + (n - surface_first_bits() + n1 - 1) / n1; }
+  int surface_step_bits(int k) const {
+    if (k == 1) return surface_first_bits();
+    return std::min(n1, n - surface_first_bits() - n1 * (k - 2));
+  }
+  // Indicator evaluations of one work item: the ends, then 2^b − 1 new candidates per step. The
+  // hardware evaluates them all, hit or miss, so this is the cost of every item.
+  int surface_evaluations() const {
+    int e = 2;
+    for (int k = 1; k <= surface_steps(); ++k) e += (1 << surface_step_bits(k)) - 1;
+    return e;
+  }
+
   // Derived widths (docs/fixed-point.md).
   static constexpr int kDirInt = 4;   // integer bits (incl. sign) of the unnormalised direction v
   static constexpr int kEdgeInt = 4;  // integer bits (incl. sign) of edge vectors

@@ -23,12 +23,16 @@ using scene::CompiledScene;
 using scene::CompiledSegment;
 using scene::Segment;
 
-void check_ip_parameters(int n, int n1) {
+void check_ip_parameters(int n, int n1, int surf_n1_first) {
   if (n1 < 1 || n1 > kMaxN1)
     throw Error("--n1", fmt::format("bits per step must be in [1, {}], got {}", kMaxN1, n1));
   if (n < 1 || n > 52) throw Error("--n", fmt::format("result bits must be in [1, 52], got {}", n));
   if (n % n1 != 0)
     throw Error("--n", fmt::format("n = {} is not a multiple of n1 = {} (K = n/n1 steps)", n, n1));
+  if (surf_n1_first < 0 || surf_n1_first > ref::hw_range::surf_n1_first_max)
+    throw Error("--surf-n1-first", fmt::format("first-step bits must be seed (0) or in [1, {}], "
+                                               "got {}", ref::hw_range::surf_n1_first_max,
+                                               surf_n1_first));
 }
 
 bool interpolation_interval(const Vec3& eye, const Vec3& v, const Segment& s, double& t1,
@@ -213,12 +217,12 @@ void shade_textures(const CompiledScene& sc, const FloatOptions& o, int i, int j
 }  // namespace
 
 image::Frame render_float(const CompiledScene& sc, const FloatOptions& o, RenderStats* stats) {
-  if (o.method == Method::kIterative) check_ip_parameters(o.n, o.n1);
+  if (o.method == Method::kIterative) check_ip_parameters(o.n, o.n1, o.surf_n1_first);
   scene::check_surface_budget(sc);
   const CameraFrame& cam = sc.camera;
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(cam, sc.curve_segments, 8, o.binning);
-  const SurfaceTracer surfaces(sc, o.method, o.n, o.n1);
+  const SurfaceTracer surfaces(sc, o.method, o.n, o.n1, o.surf_n1_first);
   std::atomic<std::uint64_t> tested{0}, hits{0}, texture_tested{0};
   SurfaceStats surface_stats;
   std::mutex surface_mutex;

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "image/frame.h"
+#include "model/hw_params.h"
 #include "scene/compiled_scene.h"
 
 namespace rpu::tracer {
@@ -21,6 +22,9 @@ struct FloatOptions {
   Method method = Method::kIdeal;
   int n = 16;            // result bits of the iterative process
   int n1 = 2;            // bits per step; K = n / n1 steps
+  // Surfaces: bits of the sign search's first step, 0 = n1 (the seed's search); the later steps
+  // take n1 bits, the last one what remains of n (ref::HwParams::surface_step_bits).
+  int surf_n1_first = ref::HwParams{}.surf_n1_first;
   bool binning = true;   // screen-space binning of curve segments (never changes the image)
   bool grid = true;      // texture classification grid (never changes the image)
   int threads = 0;       // 0 = all hardware threads
@@ -31,8 +35,10 @@ struct FloatOptions {
 // datapath would replicate.
 inline constexpr int kMaxN1 = 8;
 
-// Validates n and n1 (1 ≤ n1 ≤ kMaxN1, n1 ≤ n ≤ 52, n a multiple of n1); throws rpu::Error naming the flag.
-void check_ip_parameters(int n, int n1);
+// Validates n and n1 (1 ≤ n1 ≤ kMaxN1, n1 ≤ n ≤ 52, n a multiple of n1) and the surfaces' first
+// step (seed = 0, or 1 ≤ surf_n1_first ≤ its table maximum; a value past n takes all n bits in
+// step 1); throws rpu::Error naming the flag.
+void check_ip_parameters(int n, int n1, int surf_n1_first = 0);
 
 struct RenderStats {
   std::uint64_t pairs_tested = 0;          // ray/curve-segment pairs examined after binning

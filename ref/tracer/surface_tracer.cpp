@@ -20,21 +20,24 @@ bool surface_interval(const CompiledSurface& s, const Vec3& o, const Vec3& d, do
 }
 
 bool iterative_piece(const SurfaceGeometry& g, const AzimuthBranch& branch, const Vec3& A,
-                     const Vec3& B, int n, int n1, double& tau, std::uint64_t* evaluations) {
+                     const Vec3& B, const ref::HwParams& schedule, double& tau,
+                     std::uint64_t* evaluations) {
   const Vec3 D = B - A;
   std::uint64_t evals = 0;
   const auto inside = [&](double t) {
     ++evals;
     return g.inside(A + D * t, branch);
   };
-  const int J = 1 << n1;
-  const int K = n / n1;
-  std::array<bool, (1 << kMaxN1) + 1> s{};
+  std::array<bool, (1 << ref::hw_range::surf_n1_first_max) + 1> s{};
   bool s_lo = inside(0.0), s_hi = inside(1.0);
   tau = 0.0;
   bool found = true;
-  for (int k = 1; k <= K; ++k) {
-    const double delta = std::ldexp(1.0, -n1 * k);
+  int done = 0;  // bits of τ fixed so far
+  for (int k = 1; k <= schedule.surface_steps(); ++k) {
+    const int bits = schedule.surface_step_bits(k);
+    const int J = 1 << bits;
+    done += bits;
+    const double delta = std::ldexp(1.0, -done);
     s[0] = s_lo;
     s[J] = s_hi;
     for (int j = 1; j < J; ++j) s[j] = inside(tau + j * delta);
@@ -123,7 +126,8 @@ int ideal_samples(double length, double radius) {
 }
 
 SurfaceRayHit trace_surface(const CompiledSurface& s, const SurfaceGeometry& g, const Vec3& eye,
-                            const Vec3& v, Method method, int n, int n1, SurfaceStats* stats) {
+                            const Vec3& v, Method method, const ref::HwParams& schedule,
+                            SurfaceStats* stats) {
   SurfaceRayHit r;
   SurfaceStats local_stats;
   SurfaceStats& st = stats ? *stats : local_stats;
@@ -142,7 +146,7 @@ SurfaceRayHit trace_surface(const CompiledSurface& s, const SurfaceGeometry& g, 
     double tau = 0.0;
     const bool hit =
         method == Method::kIterative
-            ? iterative_piece(g, pc.branch, A, B, n, n1, tau, &st.evaluations)
+            ? iterative_piece(g, pc.branch, A, B, schedule, tau, &st.evaluations)
             : ideal_piece(g, pc.branch, A, B, ideal_samples(length(B - A), s.local_radius), tau,
                           &st.evaluations);
     if (!hit) continue;
@@ -154,8 +158,12 @@ SurfaceRayHit trace_surface(const CompiledSurface& s, const SurfaceGeometry& g, 
   return r;
 }
 
-SurfaceTracer::SurfaceTracer(const scene::CompiledScene& sc, Method method, int n, int n1)
-    : sc_(&sc), method_(method), n_(n), n1_(n1) {
+SurfaceTracer::SurfaceTracer(const scene::CompiledScene& sc, Method method, int n, int n1,
+                             int surf_n1_first)
+    : sc_(&sc), method_(method) {
+  schedule_.n = n;
+  schedule_.n1 = n1;
+  schedule_.surf_n1_first = surf_n1_first;
   geometry_.reserve(sc.surfaces.size());
   for (const CompiledSurface& s : sc.surfaces) geometry_.emplace_back(s.surface);
 }
@@ -167,7 +175,7 @@ bool SurfaceTracer::trace_pixel(int i, int j, double& depth, std::int32_t& primi
   bool any = false;
   for (size_t k = 0; k < geometry_.size(); ++k) {
     const CompiledSurface& s = sc_->surfaces[k];
-    const SurfaceRayHit r = trace_surface(s, geometry_[k], cam.eye, v, method_, n_, n1_, &stats);
+    const SurfaceRayHit r = trace_surface(s, geometry_[k], cam.eye, v, method_, schedule_, &stats);
     if (!r.hit) continue;
     const Vec3 X = cam.eye + v * r.t;
     const double c = dot(X - cam.eye, cam.W);  // depth (X − h)·W, as for curves

@@ -1,8 +1,10 @@
 // Ray tracing vector-described surfaces (docs/algorithms.md §3, docs/surfaces.md) in double
 // precision: per pixel-centre ray and surface, the bounding-sphere interval, its pieces, then
 // per piece
-//   kIterative (`float-ip`): the sign search of the indicator, 2^n1 sub-intervals per step,
-//                            K = n / n1 steps, exactly as docs/algorithms.md §3 says;
+//   kIterative (`float-ip`): the sign search of the indicator with the model's schedule
+//                            (docs/surfaces.md, "The search on a piece"): a first step of
+//                            2^surf_n1_first sub-intervals, then 2^n1 per step (seed: 2^n1 at
+//                            every step, K = n / n1 steps, as docs/algorithms.md §3 says);
 //   kIdeal     (`float`):    the first crossing of the surface — the ellipsoid analytically, the
 //                            others by dense sampling of the indicator plus bisection.
 // The nearest hit over the pieces and the surfaces wins (equal depth: lower primitive id).
@@ -13,6 +15,7 @@
 
 #include "scene/compiled_scene.h"
 #include "scene/surface_geometry.h"
+#include "model/hw_params.h"
 #include "tracer/float_tracer.h"
 
 namespace rpu::tracer {
@@ -51,11 +54,12 @@ struct SurfaceStats {
 bool surface_interval(const scene::CompiledSurface& s, const Vec3& o, const Vec3& d, double& t1,
                       double& t2);
 
-// The iterative process on the piece pr(τ) = A + (B − A)·τ (local points): τ_K, the start of the
-// final interval, or false when step 1 finds no sign change. `evaluations` (optional) counts the
-// inside tests.
+// The iterative process on the piece pr(τ) = A + (B − A)·τ (local points) with the schedule of
+// `schedule` (its n, n1 and surf_n1_first: ref::HwParams::surface_step_bits): τ of the start of
+// the final interval, or false when step 1 finds no sign change. `evaluations` (optional) counts
+// the inside tests.
 bool iterative_piece(const scene::SurfaceGeometry& g, const scene::AzimuthBranch& branch,
-                     const Vec3& A, const Vec3& B, int n, int n1, double& tau,
+                     const Vec3& A, const Vec3& B, const ref::HwParams& schedule, double& tau,
                      std::uint64_t* evaluations = nullptr);
 
 // The ideal first crossing on the same piece: τ of the first sign change of the indicator
@@ -77,13 +81,13 @@ struct SurfaceRayHit {
 
 // One world ray eye + v·t against one surface: the nearest hit over its pieces.
 SurfaceRayHit trace_surface(const scene::CompiledSurface& s, const scene::SurfaceGeometry& g,
-                            const Vec3& eye, const Vec3& v, Method method, int n, int n1,
-                            SurfaceStats* stats = nullptr);
+                            const Vec3& eye, const Vec3& v, Method method,
+                            const ref::HwParams& schedule, SurfaceStats* stats = nullptr);
 
 // The surfaces of a scene, prepared once per render (geometry, eye in each local frame).
 class SurfaceTracer {
  public:
-  SurfaceTracer(const scene::CompiledScene& sc, Method method, int n, int n1);
+  SurfaceTracer(const scene::CompiledScene& sc, Method method, int n, int n1, int surf_n1_first);
   bool empty() const { return geometry_.empty(); }
   // The nearest surface hit of pixel (i, j)'s centre ray: its depth (X − h)·W and primitive id
   // (equal depth: lower id). False when no surface is hit.
@@ -92,7 +96,7 @@ class SurfaceTracer {
  private:
   const scene::CompiledScene* sc_;
   Method method_;
-  int n_, n1_;
+  ref::HwParams schedule_;  // n, n1, surf_n1_first: the search's steps
   std::vector<scene::SurfaceGeometry> geometry_;
 };
 

@@ -83,6 +83,9 @@ inline ref::HwParams tb_params() {
   p.unrolled = UNROLLED != 0;
   p.surf_w = SURF_W;
   p.angle_w = ANGLE_W;
+  // rtl/surface/rpu_surface_ip.v searches with the seed's schedule (n1 bits at every step;
+  // docs/surfaces.md, "RTL"), so its twins run with that schedule here.
+  p.surf_n1_first = 0;
   p.validate();
   return p;
 }

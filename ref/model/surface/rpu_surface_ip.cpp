@@ -29,12 +29,16 @@ SurfaceIpState surface_ip_start(const HwParams& p, const SurfaceDesc& s,
 
 void surface_ip_step(const HwParams& p, const SurfaceDesc& s, const SurfaceSetupOut& piece,
                      SurfaceIpState& st, Overflow& ovf, SurfaceIpStepTrace* trace) {
-  const int J = p.J();
   const int k = st.k + 1;
-  const int shift = p.n - p.n1 * k;  // δ_k = 2^-(n1·k) = 2^shift τ-index units
+  const int bits = p.surface_step_bits(k);
+  const int J = 1 << bits;
+  int done = 0;  // bits of τ fixed after step k
+  for (int i = 1; i <= k; ++i) done += p.surface_step_bits(i);
+  const int shift = p.n - done;  // δ_k = 2^-done = 2^shift τ-index units
   st.k = k;
   if (st.miss) return;
-  std::array<bool, 257> in{};
+  SurfaceIpStepTrace local;
+  auto& in = trace ? trace->inside : local.inside;
   in[0] = st.lo_inside;
   in[J] = st.hi_inside;
   for (int j = 1; j < J; ++j)
@@ -43,10 +47,7 @@ void surface_ip_step(const HwParams& p, const SurfaceDesc& s, const SurfaceSetup
   int eta = -1;
   for (int j = 0; j < J && eta < 0; ++j)
     if (in[j] != in[j + 1]) eta = j;
-  if (trace) {
-    trace->inside = in;
-    trace->eta = eta;
-  }
+  if (trace) trace->eta = eta;
   if (eta < 0) {  // only possible at step 1: later intervals have ends that differ
     st.miss = true;
     return;
@@ -59,7 +60,7 @@ void surface_ip_step(const HwParams& p, const SurfaceDesc& s, const SurfaceSetup
 SurfaceIpState surface_ip(const HwParams& p, const SurfaceDesc& s, const SurfaceSetupOut& piece,
                           Overflow& ovf) {
   SurfaceIpState st = surface_ip_start(p, s, piece, ovf);
-  while (st.k < p.K() && !st.miss) surface_ip_step(p, s, piece, st, ovf);
+  while (st.k < p.surface_steps() && !st.miss) surface_ip_step(p, s, piece, st, ovf);
   return st;
 }
 

@@ -1,9 +1,12 @@
 // Twin of rtl/surface/rpu_surface_ip.v
-// The K-step sign search of the indicator on one piece (docs/surfaces.md, "The iterative process
-// on a piece"): τ is an n-bit dyadic index m (τ = m·2^-n); step k evaluates the candidates
-// τ_{k−1} + j·2^-(n1·k), j = 0..J, of which J − 1 are new (the ends are the previous interval's),
-// and keeps the lowest j < J whose inside bits differ at j and j + 1. Step 1 without a change is
-// a miss. Unrolled (K step units) or iterative (one unit, K passes): the same arithmetic.
+// The sign search of the indicator on one piece (docs/surfaces.md, "The search on a piece"): τ is
+// an n-bit dyadic index m (τ = m·2^-n). Step k divides the current interval into 2^b_k
+// sub-intervals, b_k = HwParams::surface_step_bits(k) (surf_n1_first, then n1, the last step what
+// remains of n; seed: n1 at every step), evaluates the candidates τ_{k−1} + j·2^-(b_1+…+b_k),
+// j = 0..2^b_k, of which 2^b_k − 1 are new (the ends are the previous interval's), and keeps the
+// lowest j whose inside bits differ at j and j + 1. Step 1 without a change is a miss. The RTL
+// implements the seed's schedule (surf_n1_first = seed), unrolled (K step units) or iterative
+// (one unit, K passes): the same arithmetic.
 #pragma once
 
 #include <array>
@@ -25,7 +28,7 @@ struct SurfaceIpState {
   bool miss = false;       // step 1 found no sign change
 };
 struct SurfaceIpStepTrace {
-  std::array<bool, 257> inside{};  // s_j, j = 0..J
+  std::array<bool, (1 << hw_range::surf_n1_first_max) + 1> inside{};  // s_j, j = 0..2^b_k
   int eta = -1;                    // selected index, −1: none (a miss at step 1)
 };
 
@@ -35,7 +38,7 @@ SurfaceIpState surface_ip_start(const HwParams& p, const SurfaceDesc& s,
 // Step k = state.k + 1 (a missed state passes through unchanged).
 void surface_ip_step(const HwParams& p, const SurfaceDesc& s, const SurfaceSetupOut& piece,
                      SurfaceIpState& state, Overflow& ovf, SurfaceIpStepTrace* trace = nullptr);
-// All K steps.
+// All HwParams::surface_steps() steps.
 SurfaceIpState surface_ip(const HwParams& p, const SurfaceDesc& s, const SurfaceSetupOut& piece,
                           Overflow& ovf);
 

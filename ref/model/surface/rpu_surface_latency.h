@@ -4,6 +4,8 @@
 // as the indicator's and the setup's latencies are (model/surface/rpu_indicator_latency.h,
 // model/surface/rpu_surface_setup_latency.h). sim/tb/surface/tb_rpu_surface_ip.cpp and
 // sim/tb/surface/tb_rpu_surface_top.cpp check every item against them.
+// The RTL implements the seed's schedule of the sign search (surf_n1_first = seed: K steps of n1
+// bits), and these counts are that schedule's.
 #pragma once
 
 #include "model/hw_params.h"
