@@ -56,6 +56,12 @@ expect_error("unknown builtin" "builtin:nope;no such built-in scene" render buil
 expect_error("n not a multiple of n1" "--n;not a multiple of n1"
              render builtin:ellipse6 --n 16 --n1 3 -o ${OUT}/x.png)
 expect_error("n1 too large" "--n1;bits per step" config --n 18 --n1 9)
+expect_error("surfaces' first step not a name or number" "--surf-n1-first;must be seed or an integer, got 'wide'"
+             config --surf-n1-first wide)
+expect_error("surfaces' first step too wide" "--surf-n1-first;first-step bits must be in [1, 10], got 11"
+             render builtin:surf_ellipsoid --backend float-ip --surf-n1-first 11 -o ${OUT}/x.png)
+expect_error("sqrt width name unknown" "--sqrt-w;must be exact or an integer, got 'tight'"
+             config --sqrt-w tight)
 expect_error("unknown backend" "--backend;warp" render builtin:ellipse6 --backend warp -o ${OUT}/x.png)
 # Patches (docs/algorithms.md §4): the fixed-point model and the RTL have no path for them; bad
 # patch flags.

@@ -168,6 +168,13 @@ elseif(MODE STREQUAL "flags")
   execute_process(COMMAND ${RPU} config --n 12 --n1 3 OUTPUT_VARIABLE cfg)
   expect("config: 8 sub-intervals, 9 candidate points, 7 new"
          "cfg MATCHES \"per step   = 8 sub-intervals, 9 candidate points \\\\(7 new after the first step\\\\)\"")
+  # The surfaces' schedule: the default first step, and the seed's by name (docs/surfaces.md).
+  execute_process(COMMAND ${RPU} config OUTPUT_VARIABLE cfg)
+  expect("config: the default surface search"
+         "cfg MATCHES \"surf steps = 7,2,2,2,2,1 \\\\(bits per step\\\\), 142 indicator evaluations\"")
+  execute_process(COMMAND ${RPU} config --surf-n1-first seed OUTPUT_VARIABLE cfg)
+  expect("config: the seed's surface search by name"
+         "cfg MATCHES \"surf steps = 2,2,2,2,2,2,2,2 \\\\(bits per step\\\\), 26 indicator evaluations\"")
   foreach(flag "--trace-pixel;1,1" "--trace-out;t.fst" "--rtl-fault" "--rtl-fault=far-hit")
     list(GET flag 0 name)
     string(REGEX REPLACE "=.*" "" name "${name}")
