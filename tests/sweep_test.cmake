@@ -155,8 +155,9 @@ elseif(MODE STREQUAL "rtl_build")
     message(FATAL_ERROR "FAILED: no on-demand Verilator build")
   endif()
   read_csv()
-  # n, n1, ..., ip, surf_w, angle_w (the table's order), K, the accuracy columns, the RTL's.
-  if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,24,20,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
+  # n, n1, ..., ip, surf_w, angle_w, surf_n1_first (the table's order), K, the accuracy columns,
+  # the RTL's.
+  if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,24,20,7,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
     message(FATAL_ERROR "FAILED: no co-simulated sample from the on-demand build: ${rows}")
   endif()
 elseif(MODE STREQUAL "csv_header")

@@ -291,8 +291,10 @@ module rpu_ip_step #(
     if (!rst_ni) valid_r <= 1'b0;
     else         valid_r <= c_valid[0];
   end
+  // (sb_r loads only with a valid item: a clock enable keeps it a flip-flop, so the pair sums'
+  // compares and η's stage do not start at a slow shift-register LUT output)
+  always @(posedge clk_i) if (c_valid[0]) sb_r <= sb_c;
   always @(posedge clk_i) begin
-    sb_r   <= sb_c;
     c_md_r <= c_md;
     ovf_r  <= |{c_ovf, c_isat};
     for (q = 0; q < J; q = q + 1) sd[q] <= {1'b0, md_a[q]} + {1'b0, md_a[q+1]};
@@ -340,21 +342,25 @@ module rpu_ip_step #(
     end
   end
   reg [N1-1:0]  eta;
+  reg [15:0]    eta_sq;  // η² (< 2^16): the winner's constant, like η, no squarer
   reg [MdW-1:0] lo_md_n, hi_md_n;
   integer e;
+  reg [15:0] sq;
   always @(*) begin
     eta     = {N1{1'b0}};
+    eta_sq  = 16'd0;
+    sq      = 16'd0;
     lo_md_n = {MdW{1'b0}};
     hi_md_n = {MdW{1'b0}};
     for (e = 0; e < J; e = e + 1)
       if (win[e]) begin
         eta     = eta | e[N1-1:0];
+        sq      = e[15:0] * e[15:0];  // a constant per e
+        eta_sq  = eta_sq | sq;
         lo_md_n = lo_md_n | md[e];
         hi_md_n = hi_md_n | md[e+1];
       end
   end
-  wire [15:0]      eta_w = {{(16-N1){1'b0}}, eta};
-  wire [15:0]      eta_sq = eta_w * eta_w;  // η² (< 2^16), registered with η
   wire             valid_h;
   wire [N1-1:0]    eta_h;
   wire [15:0]      eta_sq_h;

@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "common/parallel.h"
+#include "frame_word.h"
 #include "guide_word.h"
 #include "model/units.h"
 #include "scene/classification_grid.h"
@@ -71,20 +72,8 @@ Bits pack_segment(const ref::HwParams& p, const ref::SegmentDesc& s, bool textur
   for (const ref::GuideDesc& g : s.guide) add_guide(d, p, g);
   // The frame descriptor and frame guides (0 for a texture), rtl/curve/rpu_frame.v, rpu_ip.v.
   const ref::FrameDesc f = texture ? ref::FrameDesc{} : s.frame;
-  using H = ref::HwParams;
-  const int EW = H::kFrameMant + 2, CW2 = H::kFrameCosFrac + 2, AW = H::kFrameFlatFrac - 3;
-  d.add3(f.e1.x, f.e1.y, f.e1.z, EW);
-  d.add3(f.e2.x, f.e2.y, f.e2.z, EW);
-  d.add(f.s, 6);
-  d.add(f.c2, CW2);
-  d.add(f.s2, CW2);
-  d.add(f.guide[0].a, AW);
-  d.add(f.guide[1].a, AW);
-  for (const ref::FrameGuide& g : f.guide) {
-    d.add(static_cast<i128>(g.mode), 2);
-    d.add(g.eta, H::kFrameGuideFrac + 5);
-    d.add(g.eta2, H::frame_radicand_w());
-  }
+  add_frame_desc(d, f);
+  for (const ref::FrameGuide& g : f.guide) add_frame_guide(d, g);
   return d.bits();
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "tb_base.h"
+#include "frame_word.h"
 #include "tb_guide.h"
 #include "model/curve/rpu_test_point.h"
 
@@ -119,31 +120,6 @@ void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref:
 }
 
 
-// The frame descriptor {e1, e2, s, c2, s2, a1, a2} (rpu_frame's fr_i) and the frame guides
-// {g1, g2}, each {mode, η, η²} (rpu_candidate's g1_i, g2_i; rpu_ip's fg_i).
-inline Bits frame_bits(const ref::FrameDesc& f) {
-  using H = ref::HwParams;
-  const int EW = H::kFrameMant + 2, CW2 = H::kFrameCosFrac + 2, AW = H::kFrameFlatFrac - 3;
-  Concat c;
-  c.add3(f.e1.x, f.e1.y, f.e1.z, EW);
-  c.add3(f.e2.x, f.e2.y, f.e2.z, EW);
-  c.add(f.s, 6);
-  c.add(f.c2, CW2);
-  c.add(f.s2, CW2);
-  c.add(f.guide[0].a, AW);
-  c.add(f.guide[1].a, AW);
-  return c.bits();
-}
-inline Bits frame_guide_bits(const ref::FrameDesc& f) {
-  using H = ref::HwParams;
-  Concat c;
-  for (const ref::FrameGuide& g : f.guide) {
-    c.add(static_cast<i128>(g.mode), 2);
-    c.add(g.eta, H::kFrameGuideFrac + 5);
-    c.add(g.eta2, H::frame_radicand_w());
-  }
-  return c.bits();
-}
 // rpu_ip's result {τ, t, X (z, y, x), lo.md, hi.md}, compared field by field.
 template <class P>
 void ip_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w,

@@ -58,7 +58,6 @@ int main(int argc, char** argv) {
   const ref::ModelScene m = ref::quantize_scene(sc, p);
   const long count = tb.vectors(100000);
   const int MdW = METRIC ? 2 * H::kFrameMdFracMax + 3 : H::kFrameMdFracMax + 3;
-  const int RadW = H::frame_radicand_w(), EtaW = H::kFrameGuideFrac + 5;
 
   std::vector<Item> items;
   long n_kind[3] = {0, 0, 0}, n_sat = 0, n_arc = 0, n_flat = 0;
@@ -102,20 +101,14 @@ int main(int argc, char** argv) {
     }
   }
 
-  const auto guide_bits = [&](const ref::FrameGuide& g) {
-    sim::Bits b;
-    b.push(g.eta2, RadW);
-    b.push(g.eta, EtaW);
-    b.push(static_cast<i128>(g.mode), 2);
-    return b;
-  };
   sim::Stream<Vrpu_candidate, Item> s{.latency = sim::kSameLatency, .tag_w = 0};  // its own tag
   s.inputs = [&](sim::Inputs& in, Vrpu_candidate& t, const Item& it) {
     in("fo", t.fo_i, it.fo, 5)("x", t.x_i, it.in.x, H::kCandXW)("y", t.y_i, it.in.y, H::kCandXW);
     in("t", t.t_i, it.in.t, H::kCandTW)("c2t", t.c2t_i, it.in.c2t, H::kCandTW);
     in("s2t", t.s2t_i, it.in.s2t, H::kCandTW)("w", t.w_i, it.in.w, H::kCandWW);
     in.fields("a", t.a_i, std::vector<i128>{it.in.a[0], it.in.a[1]}, H::kCandAW);
-    in.bits("g1", t.g1_i, guide_bits(it.fd.guide[0])).bits("g2", t.g2_i, guide_bits(it.fd.guide[1]));
+    in.bits("g1", t.g1_i, sim::pack_frame_guide(it.fd.guide[0]))
+        .bits("g2", t.g2_i, sim::pack_frame_guide(it.fd.guide[1]));
     in.note("g1.mode", std::to_string(static_cast<int>(it.fd.guide[0].mode)))
         .note("g1.eta", sim::str(it.fd.guide[0].eta))
         .note("g2.mode", std::to_string(static_cast<int>(it.fd.guide[1].mode)))

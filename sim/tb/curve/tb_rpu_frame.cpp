@@ -20,7 +20,7 @@ struct Item {
 
 namespace {
 using H = ref::HwParams;
-constexpr int kEW = H::kFrameMant + 2, kSW = 6, kCW2 = H::kFrameCosFrac + 2,
+constexpr int kEW = H::kFrameMant + 2, kCW2 = H::kFrameCosFrac + 2,
               kAW = H::kFrameFlatFrac - 3;
 }  // namespace
 
@@ -77,15 +77,7 @@ int main(int argc, char** argv) {
     in.vec("A", t.a_i, it.si.A, CW).vec("AB", t.ab_i, it.si.AB, DW);
     in("alpha", t.alpha_i, it.si.alpha, TW)("beta", t.beta_i, it.si.beta, TW);
     in.vec("p1", t.p1_i, it.s.p1, CW);
-    sim::Concat c;
-    c.add3(f.e1.x, f.e1.y, f.e1.z, kEW);
-    c.add3(f.e2.x, f.e2.y, f.e2.z, kEW);
-    c.add(f.s, kSW);
-    c.add(f.c2, kCW2);
-    c.add(f.s2, kCW2);
-    c.add(f.guide[0].a, kAW);
-    c.add(f.guide[1].a, kAW);
-    in.bits("frame", t.fr_i, c.bits());
+    in.bits("frame", t.fr_i, sim::pack_frame_desc(f));
     in.note("e1", sim::str(f.e1)).note("e2", sim::str(f.e2)).note("s", std::to_string(f.s));
     in.note("c2", sim::str(f.c2)).note("s2", sim::str(f.s2));
     in.note("a1", sim::str(f.guide[0].a)).note("a2", sim::str(f.guide[1].a));

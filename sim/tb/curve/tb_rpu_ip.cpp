@@ -108,7 +108,8 @@ int main(int argc, char** argv) {
   sim::Stream<Dut, Item> s{.tag_w = 0};
   s.inputs = [&](sim::Inputs& in, Dut& t, const Item& it) {
     sim::pair_inputs(in, t, p, it.s, it.si);
-    in.bits("frame", t.fr_i, sim::frame_bits(it.s.frame)).bits("fg", t.fg_i, sim::frame_guide_bits(it.s.frame));
+    in.bits("frame", t.fr_i, sim::pack_frame_desc(it.s.frame))
+        .bits("fg", t.fg_i, sim::pack_frame_guides(it.s.frame));
     in("ctx", t.ctx_i, it.id, 32);
   };
   s.outputs = [&](sim::Outputs& o, const Dut& t, const Item& it) {
