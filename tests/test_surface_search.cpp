@@ -97,8 +97,12 @@ Hit expect_seed_loses_and_default_keeps(const std::string& name, const Vec3& tar
   EXPECT_TRUE(ip.hit) << "float-ip loses it with the default search";
   EXPECT_TRUE(model.hit) << "ref loses it with the default search";
   const double tol = 1e-3 * ideal.depth;
-  if (ip.hit) EXPECT_NEAR(ip.depth, ideal.depth, tol) << "float-ip: another crossing";
-  if (model.hit) EXPECT_NEAR(model.depth, ideal.depth, tol) << "ref: another crossing";
+  if (ip.hit) {
+    EXPECT_NEAR(ip.depth, ideal.depth, tol) << "float-ip: another crossing";
+  }
+  if (model.hit) {
+    EXPECT_NEAR(model.depth, ideal.depth, tol) << "ref: another crossing";
+  }
   std::printf("%s (%s): float depth %.6f, float-ip %.6f, ref %.6f\n", name.c_str(), what.c_str(),
               ideal.depth, ip.depth, model.depth);
   return ideal;
@@ -196,7 +200,7 @@ namespace {
 // count, hit or miss) and per pixel, the indicator units an unrolled unit needs for one item per
 // cycle, the cycles per item of an iterative unit with 3 indicators, and frames per second at
 // 1920×1080 and 250 MHz (the 4.0 ns budget) for each form. Opt-in:
-//   build/tests/test_surface_search --gtest_also_run_disabled_tests \
+//   build/tests/test_surface_search --gtest_also_run_disabled_tests
 //       --gtest_filter='DISABLED_SurfaceSearchMeasure*'
 TEST(DISABLED_SurfaceSearchMeasure, FirstStepBits256) {
   constexpr double kClock = 250e6, kPixels1080p = 1920.0 * 1080.0;
