@@ -361,10 +361,13 @@ std::string banner(const CompareInput& in, const nlohmann::json& metrics) {
     return fmt::format("<div class=\"banner fail\">FAIL: rtl == ref on all {} pixels, but {} work "
                        "items differ from the model in some field (see the mismatch records)</div>\n",
                        pixels, items.get<size_t>());
+  const std::string scope =
+      in.rtl_scope.empty() ? "" : " (the RTL draws " + escape_html(in.rtl_scope) + ")";
   if (differ == 0)
-    return fmt::format("<div class=\"banner pass\">PASS: rtl == ref on all {} pixels</div>\n", pixels);
-  return fmt::format("<div class=\"banner fail\">FAIL: rtl differs from ref on {} of {} pixels</div>\n",
-                     differ, pixels);
+    return fmt::format("<div class=\"banner pass\">PASS: rtl == ref on all {} pixels{}</div>\n",
+                       pixels, scope);
+  return fmt::format("<div class=\"banner fail\">FAIL: rtl differs from ref on {} of {} pixels{}</div>\n",
+                     differ, pixels, scope);
 }
 
 // The ref vs float-ip banner: shown when the difference exceeds the documented bound.
@@ -491,6 +494,8 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
     const std::string key = key_name(a) + "_vs_" + key_name(b);
     const BackendRender* ra = find(a);
     const BackendRender* rb = find(b);
+    // The RTL against the model's render of what the RTL draws (all of it, or a part).
+    if (a == "rtl" && b == "ref" && ra && in.rtl_reference) rb = &*in.rtl_reference;
     if (!ra || !rb) {
       metrics[key + "_mismatched_pixels"] = nullptr;
       metrics["comparisons"][key] = nullptr;
@@ -516,6 +521,9 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
   const bool checked_rtl = find("rtl") && find("ref");
   const bool rtl_equals_ref = checked_rtl && metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>() == 0;
   metrics["rtl_equals_ref"] = checked_rtl ? nlohmann::json(rtl_equals_ref) : nlohmann::json();
+  metrics["rtl_scope"] = !find("rtl")           ? nlohmann::json()
+                         : in.rtl_scope.empty() ? nlohmann::json("the whole scene")
+                                                : nlohmann::json(in.rtl_scope);
 
   // ref vs float-ip against the documented bound (README; docs/fixed-point.md).
   if (const BackendRender* ref = find("ref"), *ip = find("float-ip"); ref && ip) {

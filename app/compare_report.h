@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,11 @@ struct CompareInput {
   nlohmann::json rtl;  // co-simulation statistics: cycles, pairs, latency_cycles, stall_cycles,
                        // items_per_cycle, sim_seconds, harness ("c++"/"systemc"), ...; may be null
   std::vector<std::string> mismatch_lines;  // human-readable mismatch records (first few)
+  // When the RTL draws only part of the scene (a scene with surfaces: its curves and textures),
+  // what it draws, and the model's render of that part, which rtl is compared with instead of
+  // the whole scene's ref render. Empty / absent: the RTL draws the whole scene.
+  std::string rtl_scope;
+  std::optional<BackendRender> rtl_reference;
   nlohmann::json extra_metrics;  // merged into metrics.json at the top level (e.g. "patches",
                                  // "not_applicable"); may be null
 };

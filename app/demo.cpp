@@ -72,6 +72,11 @@ int run_demo(const DemoOptions& options) {
   std::vector<std::string> errors(scenes.size());
   // Backends a scene's primitives have no path through (compare's "not_applicable": ref and rtl
   // for patches, rtl for surfaces until the RTL traces them) and what the scene holds.
+  // What the RTL drew (compare's "rtl_scope"): "the whole scene", or a part of it.
+  const auto rtl_scope = [&](size_t k) -> std::string {
+    const auto it = metrics[k].find("rtl_scope");
+    return it != metrics[k].end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
   const auto not_applicable = [&](size_t k) {
     const auto it = metrics[k].find("not_applicable");
     std::string list;
@@ -112,7 +117,9 @@ int run_demo(const DemoOptions& options) {
                                                      : " and every patch method",
                                                  not_applicable(k))
                                : co.skip_rtl      ? std::string("software backends only (--no-rtl)")
-                                                  : std::string("PASS, rtl == ref"));
+                               : rtl_scope(k).empty() || rtl_scope(k) == "the whole scene"
+                                   ? std::string("PASS, rtl == ref")
+                                   : "PASS, rtl == ref on " + rtl_scope(k));
     }
   };
   {

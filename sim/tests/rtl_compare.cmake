@@ -48,7 +48,16 @@ add_test(NAME rtl_compare_star_joins COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FIL
          "-DARGS=compare;${PROJECT_SOURCE_DIR}/tests/scenes/star_joins.json;--out;${RPU_CMP_OUT}/star_joins"
          -DEXPECT_RC=0 "-DEXPECT_ERR=rtl vs ref 0 px, ref vs float-ip 0 px;PASS: report"
          -P ${RPU_RUN})
-list(APPEND rtl_tests rtl_compare_far_camera rtl_compare_pixel_edge rtl_compare_star_joins)
+# A mixed scene keeps its RTL check: surf_mix's curve and texture through the RTL, compared with
+# the model's render of the same part; the surfaces are n/a for the RTL only.
+add_test(NAME rtl_compare_surf_mix COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=compare;builtin:surf_mix;--size;48x48;--out;${RPU_CMP_OUT}/surf_mix"
+         -DEXPECT_RC=0
+         "-DEXPECT_ERR=rtl [^\n]*pairs \\(curves and textures; surfaces n/a\\);rtl vs ref 0 px;PASS: report"
+         "-DFILES=${RPU_CMP_OUT}/surf_mix/metrics.json;${RPU_CMP_OUT}/surf_mix/diff_rtl_vs_ref.png"
+         -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_compare_far_camera rtl_compare_pixel_edge rtl_compare_star_joins
+     rtl_compare_surf_mix)
 
 # The main job's command at a small size: every scene compared concurrently, the index written.
 add_test(NAME rtl_demo COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
