@@ -1,11 +1,15 @@
 #include "compare.h"
 
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "common/error.h"
+#include "model/descriptors.h"
+#include "run_record.h"
 #include "scene/compiled_scene.h"
 
 namespace rpu::app {
@@ -34,6 +38,15 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   for (const auto& p : sc.primitives) in.colors.push_back(p.color);
   in.background = sc.background;
   in.config = config_json(o.backends);
+  const auto t_start = std::chrono::steady_clock::now();
+  for (const auto& p : sc.primitives) in.curve_primitive.push_back(p.kind == scene::Primitive::Kind::kCurve);
+  if (sc.patches.empty()) {
+    // The model's depth is c·S·2^(FE + kRayGuard) (docs/fixed-point.md): world units per unit.
+    const ref::ModelScene m = ref::quantize_scene(sc, o.backends.hw);
+    const double unit = 1.0 / (m.norm.scale * std::ldexp(1.0, o.backends.hw.edge_frac +
+                                                                 ref::HwParams::kRayGuard));
+    in.depth_unit["ref"] = in.depth_unit["rtl"] = unit;
+  }
   bool rtl_ok = false, rtl_ran = false;
   nlohmann::json not_applicable = nlohmann::json::array(), patch_stats;
   // A scene with surfaces (and no patches) still co-simulates its curves and textures: the RTL
@@ -110,6 +123,9 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
     in.extra_metrics["patches"] = patch_stats;
   }
   in.extra_metrics["not_applicable"] = not_applicable;
+  in.record = run_record(o.command);
+  in.record["wall_seconds"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   const CompareSummary s = write_compare_report(in, o.out_dir);
   if (metrics_out) *metrics_out = s.metrics;
   const bool rtl_differs = rtl_ran && !(rtl_ok && s.rtl_equals_ref);

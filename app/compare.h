@@ -15,6 +15,7 @@ struct CompareOptions {
   BackendOptions backends;
   bool skip_rtl = false;   // --no-rtl: the three software backends only
   bool quiet = false;
+  std::string command;     // the command line, for the report's record (run_record.h)
 };
 
 // Exit status: 0 when the RTL equals the model on every pixel (and every work item), or when the

@@ -448,6 +448,49 @@ std::string report_html(const ReportParts& r) {
     html += "</table>\n";
   }
 
+  html += "<h2>Record</h2>\n" + key_value_table(in.record, "Not recorded.");
+
+  html += fmt::format("<h2>Differing pixels</h2>\n<p>{} pixels where two renders disagree on the "
+                      "primitive{}; depths in world units along W.</p>\n",
+                      m["differing_pixels_total"].get<size_t>(),
+                      m["differing_pixels_total"].get<size_t>() > kMaxPixelRecords
+                          ? fmt::format(" (the first {} listed)", kMaxPixelRecords)
+                          : std::string());
+  if (!m["differing_pixels"].empty()) {
+    html += "<table>\n<tr><th>pixel</th>";
+    for (const BackendRender& b : in.renders)
+      html += fmt::format("<th>{0} primitive</th><th>{0} depth</th>", escape_html(b.name));
+    html += "</tr>\n";
+    for (const auto& rec : m["differing_pixels"]) {
+      html += fmt::format("<tr><td>({}, {})</td>", rec["x"].get<int>(), rec["y"].get<int>());
+      for (const BackendRender& b : in.renders) {
+        const auto& v = rec[b.name];
+        html += fmt::format("<td class=\"num\">{}</td><td class=\"num\">{}</td>",
+                            v["primitive"].is_null() ? "—" : v["primitive"].dump(),
+                            v["depth"].is_null() ? "—" : fmt::format("{:.6g}", v["depth"].get<double>()));
+      }
+      html += "</tr>\n";
+    }
+    html += "</table>\n";
+  }
+  html += "<h2>Depth and connectivity</h2>\n";
+  if (m["depth_ref_vs_float"].is_object()) {
+    const auto& d = m["depth_ref_vs_float"];
+    html += fmt::format("<p>ref vs float, on the {} pixels both hit with the same primitive: "
+                        "relative depth difference mean {:.3g}, max {:.3g}; {} pixels beyond "
+                        "{:g}.</p>\n",
+                        d["pixels"].get<size_t>(), d["mean_relative"].get<double>(),
+                        d["max_relative"].get<double>(), d["beyond_1e-3"].get<size_t>(),
+                        kDepthAgreement);
+  }
+  if (m["curve_gaps_vs_float"].is_object()) {
+    std::string gaps;
+    for (const auto& [name, v] : m["curve_gaps_vs_float"].items())
+      gaps += fmt::format("{}{}: {}", gaps.empty() ? "" : ", ", escape_html(name), v.get<long>());
+    html += "<p>Gaps along curves where float is connected and the backend is not (extra "
+            "8-connected pieces per curve, summed): " + gaps + ".</p>\n";
+  }
+
   html += "<h2>Hardware configuration</h2>\n" + key_value_table(in.config, "No configuration given.");
   html += "<h2>RTL co-simulation</h2>\n" + key_value_table(in.rtl, "The RTL was not simulated.");
   html += "<h2>Mismatch records</h2>\n";
@@ -461,6 +504,119 @@ std::string report_html(const ReportParts& r) {
   return html + "</body>\n</html>\n";
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// The engineering record: differing pixels, depth agreement, curve connectivity
+
+namespace {
+
+double depth_world(const CompareInput& in, const BackendRender& r, size_t k) {
+  const auto it = in.depth_unit.find(r.name);
+  return r.frame.depth[k] * (it == in.depth_unit.end() ? 1.0 : it->second);
+}
+
+// Pixels where two renders (every pair present, and rtl against its reference) disagree on the
+// primitive, in scan order, at most kMaxPixelRecords, with every render's primitive and depth.
+nlohmann::json pixel_records(const CompareInput& in, size_t& total) {
+  std::vector<const BackendRender*> all;
+  for (const auto& r : in.renders) all.push_back(&r);
+  const image::Frame& f0 = in.renders.front().frame;
+  nlohmann::json list = nlohmann::json::array();
+  total = 0;
+  for (int j = 0; j < f0.height; ++j)
+    for (int i = 0; i < f0.width; ++i) {
+      const size_t k = f0.index(i, j);
+      bool differ = false;
+      for (size_t a = 0; a < all.size() && !differ; ++a)
+        for (size_t b = a + 1; b < all.size() && !differ; ++b) {
+          // The RTL is judged against what it draws (rtl_reference), not the whole scene.
+          const bool rtl_part = in.rtl_reference && (all[a]->name == "rtl" || all[b]->name == "rtl");
+          if (!rtl_part) differ = all[a]->frame.primitive[k] != all[b]->frame.primitive[k];
+        }
+      if (in.rtl_reference)
+        for (const auto* r : all)
+          if (r->name == "rtl") differ |= r->frame.primitive[k] != in.rtl_reference->frame.primitive[k];
+      if (!differ) continue;
+      ++total;
+      if (list.size() >= kMaxPixelRecords) continue;
+      nlohmann::json rec = {{"x", i}, {"y", j}};
+      for (const auto* r : all) {
+        const std::int32_t p = r->frame.primitive[k];
+        rec[r->name] = p == image::kBackground
+                           ? nlohmann::json{{"primitive", nullptr}, {"depth", nullptr}}
+                           : nlohmann::json{{"primitive", p}, {"depth", depth_world(in, *r, k)}};
+      }
+      list.push_back(rec);
+    }
+  return list;
+}
+
+// ref against float where both hit the same primitive: how many, and the relative depth
+// difference |c_ref − c_float| / c_float (mean, max, how many beyond kDepthAgreement).
+nlohmann::json depth_statistics(const CompareInput& in, const BackendRender& a, const BackendRender& b) {
+  size_t n = 0, beyond = 0;
+  double sum = 0.0, max = 0.0;
+  for (size_t k = 0; k < a.frame.primitive.size(); ++k) {
+    if (a.frame.primitive[k] == image::kBackground || a.frame.primitive[k] != b.frame.primitive[k]) continue;
+    const double da = depth_world(in, a, k), db = depth_world(in, b, k);
+    const double rel = std::fabs(da - db) / std::max(std::fabs(db), 1e-300);
+    ++n;
+    sum += rel;
+    max = std::max(max, rel);
+    beyond += rel > kDepthAgreement;
+  }
+  return {{"pixels", n}, {"mean_relative", n ? sum / static_cast<double>(n) : 0.0},
+          {"max_relative", max}, {"beyond_1e-3", beyond}};
+}
+
+// 8-connected pieces of one primitive's pixels.
+int pieces(const image::Frame& f, std::int32_t id) {
+  std::vector<char> seen(f.primitive.size(), 0);
+  std::vector<std::pair<int, int>> stack;
+  int count = 0;
+  for (int j = 0; j < f.height; ++j)
+    for (int i = 0; i < f.width; ++i) {
+      const size_t k = f.index(i, j);
+      if (seen[k] || f.primitive[k] != id) continue;
+      ++count;
+      seen[k] = 1;
+      stack.push_back({i, j});
+      while (!stack.empty()) {
+        const auto [x, y] = stack.back();
+        stack.pop_back();
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int u = x + dx, v = y + dy;
+            if (u < 0 || v < 0 || u >= f.width || v >= f.height) continue;
+            const size_t q = f.index(u, v);
+            if (seen[q] || f.primitive[q] != id) continue;
+            seen[q] = 1;
+            stack.push_back({u, v});
+          }
+      }
+    }
+  return count;
+}
+
+// Per backend: the gaps along curves where float is connected and the backend is not, counted as
+// the extra 8-connected pieces of each curve's pixels, summed over the curves.
+nlohmann::json curve_connectivity(const CompareInput& in, const BackendRender& ideal) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const BackendRender& r : in.renders) {
+    if (&r == &ideal) continue;
+    long gaps = 0;
+    for (size_t id = 0; id < in.curve_primitive.size(); ++id) {
+      if (!in.curve_primitive[id]) continue;
+      const int want = pieces(ideal.frame, static_cast<std::int32_t>(id));
+      const int have = pieces(r.frame, static_cast<std::int32_t>(id));
+      gaps += std::max(0, have - want);
+    }
+    out[r.name] = gaps;
+  }
+  return out;
+}
+
+}  // namespace
 
 // Writes every file of the report into `dir` (an existing, empty staging directory).
 CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
@@ -521,6 +677,21 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
   const bool checked_rtl = find("rtl") && find("ref");
   const bool rtl_equals_ref = checked_rtl && metrics["rtl_vs_ref_mismatched_pixels"].get<size_t>() == 0;
   metrics["rtl_equals_ref"] = checked_rtl ? nlohmann::json(rtl_equals_ref) : nlohmann::json();
+  // The engineering record.
+  metrics["record"] = in.record;
+  size_t differing = 0;
+  metrics["differing_pixels"] = pixel_records(in, differing);
+  metrics["differing_pixels_total"] = differing;
+  if (const BackendRender* ref = find("ref"), *fl = find("float"); ref && fl)
+    metrics["depth_ref_vs_float"] = depth_statistics(in, *ref, *fl);
+  else
+    metrics["depth_ref_vs_float"] = nullptr;
+  const bool any_curve = std::find(in.curve_primitive.begin(), in.curve_primitive.end(), true) !=
+                         in.curve_primitive.end();
+  if (const BackendRender* fl = find("float"); fl && any_curve)
+    metrics["curve_gaps_vs_float"] = curve_connectivity(in, *fl);
+  else
+    metrics["curve_gaps_vs_float"] = nullptr;
   metrics["rtl_scope"] = !find("rtl")           ? nlohmann::json()
                          : in.rtl_scope.empty() ? nlohmann::json("the whole scene")
                                                 : nlohmann::json(in.rtl_scope);

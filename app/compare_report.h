@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,14 @@ struct CompareInput {
   // the whole scene's ref render. Empty / absent: the RTL draws the whole scene.
   std::string rtl_scope;
   std::optional<BackendRender> rtl_reference;
+  // The engineering record (run_record.h: command, git commit, tool versions) and the whole
+  // run's wall time; may be null.
+  nlohmann::json record;
+  // Per primitive id: true for a curve (the connectivity count follows curves).
+  std::vector<bool> curve_primitive;
+  // World units per depth unit of each render's frame (ref and rtl keep the model's fixed-point
+  // depth c·S·2^(FE+14)); a render not named here is in world units.
+  std::map<std::string, double> depth_unit;
   nlohmann::json extra_metrics;  // merged into metrics.json at the top level (e.g. "patches",
                                  // "not_applicable"); may be null
 };
@@ -54,6 +63,10 @@ struct CompareSummary {
 // two hit counts) of every demo scene. Beyond it compare warns (stderr, metrics.json, banner);
 // the exit status is unchanged (2 is reserved for RTL != model).
 inline constexpr double kRefVsFloatIpBound = 0.001;
+// The report lists at most this many differing pixels (metrics.json "differing_pixels").
+inline constexpr size_t kMaxPixelRecords = 100;
+// A depth "agrees" within this relative difference (the depth statistics of ref vs float).
+inline constexpr double kDepthAgreement = 1e-3;
 
 // ... and never on this many differing pixels or fewer, whatever the frame: at 0.1 % a frame
 // needs 1,000 hit pixels before one pixel may differ, and a pixel whose closest approach lies on

@@ -17,6 +17,7 @@
 #include "backends.h"
 #include "builtin_scenes.h"
 #include "compare.h"
+#include "run_record.h"
 #include "common/error.h"
 #include "common/limits.h"
 #include "demo.h"
@@ -443,6 +444,7 @@ int main(int argc, char** argv) {
     }
     if (compare_cmd->parsed()) {
       compare.backends = flags.backend_options();
+      compare.command = app::command_line(argc, argv);
       if (!compare_scene.starts_with("builtin:")) compare.input_file = compare_scene;
       return app::run_compare(compare_scene, flags.load(compare_scene), compare);
     }
@@ -450,6 +452,7 @@ int main(int argc, char** argv) {
       refuse_flags(*demo_cmd, {"--trace-pixel", "--trace-out", "--rtl-fault"},
                    "it compares every built-in scene; use rpu render or rpu compare on one scene");
       demo.compare.backends = flags.backend_options();
+      demo.compare.command = app::command_line(argc, argv);
       demo.load = [&](const std::string& arg) { return flags.load(arg); };
       return app::run_demo(demo);
     }

@@ -154,6 +154,44 @@ TEST(CompareReport, CountsMatchKnownDifferences) {
   EXPECT_EQ(nlohmann::json::parse(read_text(dir / "metrics.json")), m);
 }
 
+// The engineering record: the run's record as given, the differing pixels with every render's
+// primitive and depth (world units: ref's depth is scaled by its unit), ref vs float depth
+// statistics, and the gaps along curves.
+TEST(CompareReport, EngineeringRecord) {
+  CompareInput in = full_input();
+  for (auto& r : in.renders)
+    for (size_t k = 0; k < r.frame.primitive.size(); ++k)
+      if (r.frame.primitive[k] != image::kBackground) r.frame.depth[k] = r.name == "ref" ? 20.0 : 10.0;
+  image::Frame& ref = in.renders[2].frame;
+  ref.depth[ref.index(2, 2)] = 20.4;  // 2 % deeper than float there
+  in.depth_unit["ref"] = 0.5;
+  in.curve_primitive = {true, false, false};
+  in.record = {{"command", "rpu compare builtin:synthetic --out x"}, {"git_commit", "abc123"}};
+  const fs::path dir = fresh_dir("record");
+  const nlohmann::json m = write_compare_report(in, dir.string()).metrics;
+  EXPECT_EQ(m["record"]["git_commit"], "abc123");
+  // (0,0) (1,1) (5,2) rtl/ref; (7,5) (6,0) (3,5) (2,5) among the others.
+  EXPECT_EQ(m["differing_pixels_total"], 7);
+  const nlohmann::json& first = m["differing_pixels"][0];
+  EXPECT_EQ(first["x"], 0);
+  EXPECT_EQ(first["y"], 0);
+  EXPECT_EQ(first["rtl"]["primitive"], 2);
+  EXPECT_EQ(first["rtl"]["depth"], 10.0);
+  EXPECT_TRUE(first["ref"]["primitive"].is_null());
+  const nlohmann::json& d = m["depth_ref_vs_float"];
+  EXPECT_EQ(d["pixels"], 15);  // every ref hit is float's primitive too
+  EXPECT_NEAR(d["max_relative"].get<double>(), 0.02, 1e-12);
+  EXPECT_EQ(d["beyond_1e-3"], 1);
+  // Curve 0: float has the block and (7,5); float-ip adds the lone (2,5): one gap.
+  EXPECT_EQ(m["curve_gaps_vs_float"]["float-ip"], 1);
+  EXPECT_EQ(m["curve_gaps_vs_float"]["ref"], 0);
+  EXPECT_EQ(m["curve_gaps_vs_float"]["rtl"], 0);
+  const std::string html = read_text(dir / "report.html");
+  EXPECT_NE(html.find("rpu compare builtin:synthetic --out x"), std::string::npos);
+  EXPECT_NE(html.find("<td>(3, 5)</td>"), std::string::npos);
+  EXPECT_NE(html.find("Gaps along curves"), std::string::npos);
+}
+
 TEST(CompareReport, EqualRtlAndRefPass) {
   CompareInput in = full_input();
   for (auto& r : in.renders)
