@@ -124,6 +124,12 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   }
   in.extra_metrics["not_applicable"] = not_applicable;
   in.record = run_record(o.command);
+  {
+    ref::HwParams defaults;
+    defaults.unrolled = o.backends.hw.unrolled;
+    in.extra_metrics["resources"] =
+        docs_resources(o.backends.hw == defaults, o.backends.hw.unrolled, scene_arg);
+  }
   in.record["wall_seconds"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   const CompareSummary s = write_compare_report(in, o.out_dir);

@@ -449,6 +449,9 @@ std::string report_html(const ReportParts& r) {
   }
 
   html += "<h2>Record</h2>\n" + key_value_table(in.record, "Not recorded.");
+  html += "<h2>Resources and frame rate of this configuration</h2>\n" +
+          key_value_table(m.contains("resources") ? m["resources"] : nlohmann::json(),
+                          "Not given.");
 
   html += fmt::format("<h2>Differing pixels</h2>\n<p>{} pixels where two renders disagree on the "
                       "primitive{}; depths in world units along W.</p>\n",

@@ -160,7 +160,12 @@ int run_demo(const DemoOptions& options) {
                       cell("latency_cycles"), num("sim_seconds", "{:.1f}"),
                       num("items_per_second", "{:.0f}"), num("cycles_per_second", "{:.0f}"),
                       b.name);
-    rows_html += fmt::format("<tr><td><a href=\"{0}/report.html\">{0}</a></td><td>{1}&times;{2}</td>"
+    // A thumbnail (the float render, in the scene's report directory) and the scene's own
+    // one-line description.
+    rows_html += fmt::format("<tr><td><a href=\"{0}/report.html\"><img src=\"{0}/float.png\" "
+                             "alt=\"{0}\" class=\"thumb\"></a></td>"
+                             "<td><a href=\"{0}/report.html\">{0}</a><br><small>{9}</small></td>"
+                             "<td>{1}&times;{2}</td>"
                              "<td>{3}</td><td>{4}</td><td>{5}</td><td>{6}</td><td>{7}</td>"
                              "<td>{8}</td></tr>\n",
                              b.name, sc.camera.width, sc.camera.height,
@@ -170,7 +175,8 @@ int run_demo(const DemoOptions& options) {
                              cell("float_ip_vs_float_mismatched_pixels"), cell("cycles"),
                              rc != 0      ? "FAIL"
                              : float_only ? "n/a (" + float_only_kinds(sc) + ")"
-                             : options.compare.skip_rtl ? "not run" : "PASS");
+                             : options.compare.skip_rtl ? "not run" : "PASS",
+                             escape_html(sc.about));
   }
   const fs::path out(options.out_dir);
   write_text_file(out / "summary.json",
@@ -179,8 +185,9 @@ int run_demo(const DemoOptions& options) {
   write_text_file(out / "index.html",
       "<!doctype html><html><head><meta charset=\"utf-8\"><title>rpu demo</title>"
       "<style>body{font-family:sans-serif}td,th{padding:2px 8px;border-bottom:1px solid #ccc}"
+      ".thumb{width:96px;height:auto;image-rendering:pixelated}small{color:#555}"
       "</style></head><body><h1>rpu demo: every built-in scene, every backend</h1>"
-      "<table><tr><th>scene</th><th>size</th><th>rtl vs ref</th><th>ref vs float-ip</th>"
+      "<table><tr><th></th><th>scene</th><th>size</th><th>rtl vs ref</th><th>ref vs float-ip</th>"
       "<th>ref vs float</th><th>float-ip vs float</th><th>cycles</th><th>RTL = model</th></tr>\n" +
       rows_html + "</table></body></html>\n");
   std::cout << "wrote " << (fs::path(options.out_dir) / "index.html").string() << " and "

@@ -1,6 +1,8 @@
 #include "run_record.h"
 
 #include <array>
+#include <fstream>
+#include <vector>
 #include <cstdio>
 #include <memory>
 
@@ -45,6 +47,68 @@ nlohmann::json run_record(const std::string& command) {
           {"git_commit", git.empty() ? "unknown" : git},
           {"verilator", verilator.empty() ? "not found" : verilator},
           {"yosys", yosys.empty() ? "not found" : yosys}};
+}
+
+}  // namespace rpu::app
+
+namespace rpu::app {
+
+namespace {
+
+// The cells of a Markdown table row, trimmed ("| a | b |" → {"a", "b"}).
+std::vector<std::string> cells(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (size_t k = 1; k < line.size(); ++k) {
+    if (line[k] == '|') {
+      const size_t b = cur.find_first_not_of(' '), e = cur.find_last_not_of(' ');
+      out.push_back(b == std::string::npos ? "" : cur.substr(b, e - b + 1));
+      cur.clear();
+    } else {
+      cur += line[k];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json docs_resources(bool defaults, bool unrolled, const std::string& scene_arg) {
+  if (!defaults)
+    return {{"note", "docs/throughput.md holds the default parameters only"}};
+  const std::string path = std::string(RPU_SOURCE_DIR) + "/docs/throughput.md";
+  std::ifstream f(path);
+  if (!f) return {{"note", "docs/throughput.md not found in the checkout"}};
+  const std::string form = unrolled ? "unrolled" : "iterative";
+  const std::string scene =
+      scene_arg.starts_with("builtin:") ? scene_arg.substr(std::string("builtin:").size()) : "";
+  nlohmann::json out = {{"form", form}, {"from", "docs/throughput.md"}};
+  std::vector<std::string> fps_header;
+  std::string line;
+  while (std::getline(f, line)) {
+    if (!line.starts_with("| ")) continue;
+    const std::vector<std::string> c = cells(line);
+    if (c.size() >= 10 && c[0] == form && !out.contains("lut_sites")) {
+      out["source"] = c[1];
+      out["lut_sites"] = c[2];
+      out["ff"] = c[3];
+      out["dsp48e1"] = c[4];
+      out["bram36"] = c[5];
+      out["sta_ns"] = c[7];
+      out["routed_clock"] = c[9];
+    } else if (!c.empty() && c[0] == "scene (frames/s)") {
+      fps_header = c;
+    } else if (!fps_header.empty() && !scene.empty() && !c.empty() && c[0] == scene &&
+               c.size() == fps_header.size()) {
+      for (size_t k = 2; k < c.size(); ++k)
+        if (fps_header[k].ends_with(" " + form))
+          out["fps_1080p"][fps_header[k].substr(0, fps_header[k].size() - form.size() - 1)] = c[k];
+    }
+  }
+  if (!out.contains("lut_sites")) return {{"note", "no " + form + " row in docs/throughput.md"}};
+  if (!out.contains("fps_1080p"))
+    out["fps_1080p"] = "docs/throughput.md projects the built-in curve and texture scenes only";
+  return out;
 }
 
 }  // namespace rpu::app

@@ -19,3 +19,14 @@ std::string command_line(int argc, char** argv);
 nlohmann::json run_record(const std::string& command);
 
 }  // namespace rpu::app
+
+namespace rpu::app {
+
+// The resources and projected frame rates of a configuration, read from docs/throughput.md of the
+// checkout this rpu was built from (its tables hold the default parameters only; the numbers have
+// their one home there): for the defaults in the unrolled or iterative form, {"form", "source",
+// "lut_sites", "ff", "dsp48e1", "bram36", "sta_ns", "routed_clock"} and, for a built-in scene the
+// page projects, "fps_1080p" per part; otherwise {"note": why not}.
+nlohmann::json docs_resources(bool defaults, bool unrolled, const std::string& scene_arg);
+
+}  // namespace rpu::app

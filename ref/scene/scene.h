@@ -70,6 +70,7 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Surface> surfaces;  // docs/algorithms.md §3 (seed 004), scene/surface.h
   std::vector<Patch> patches;  // docs/algorithms.md §4; float backend only (no fixed-point path)
+  std::string about;  // the file's free one-line description ("about"), "" when it has none
 };
 
 // Largest accepted image side and pixel count: bigger requests are refused, not attempted

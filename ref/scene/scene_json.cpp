@@ -576,6 +576,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   scene.source = source;
   if (const Json* a = find_key(j, "about"); a && !a->is_string())
     top.key("about").fail("expected a string (a free description), got " + describe(*a));
+  if (const Json* a = find_key(j, "about")) scene.about = a->get<std::string>();
   scene.camera = camera(required(j, top, "camera"), top.key("camera"));
   if (const Json* b = find_key(j, "background"))
     scene.background = color(*b, top.key("background"));
