@@ -121,10 +121,12 @@ std::array<float, 3> as_float(const scene::Color& c) {
   return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
 }
 
-// The integer enlargement factor for the report (1: shown as is).
-int enlargement(int width, int height) {
+// The integer enlargement factor for the report (1: shown as is); difference images are enlarged
+// up to kDiffEnlargeUpTo.
+int enlargement(int width, int height, bool difference = false) {
   const int side = std::max(width, height);
-  return side < kEnlargeBelow ? std::max(2, 2 * kEnlargeBelow / side) : 1;
+  if (side < kEnlargeBelow) return std::max(2, 2 * kEnlargeBelow / side);
+  return difference && side <= kDiffEnlargeUpTo ? 2 : 1;
 }
 
 // An image written as <stem>.png, and the file the report shows (an enlarged copy when small).
@@ -145,11 +147,12 @@ void write_png(const ImageBuf& buf, const fs::path& path) {
                           TypeDesc::FLOAT, values.data());
 }
 
-WrittenImage write_image(const ImageBuf& buf, const fs::path& dir, const std::string& stem) {
+WrittenImage write_image(const ImageBuf& buf, const fs::path& dir, const std::string& stem,
+                         bool difference = false) {
   const ImageSpec& spec = buf.spec();
   WrittenImage w{stem + ".png", stem + ".png", spec.width, spec.height};
   write_png(buf, dir / w.file);
-  if (const int k = enlargement(spec.width, spec.height); k > 1) {
+  if (const int k = enlargement(spec.width, spec.height, difference); k > 1) {
     // Nearest neighbour at an integer factor: every source pixel becomes a crisp k×k block.
     const ROI big(0, spec.width * k, 0, spec.height * k, 0, 1, 0, spec.nchannels);
     w.shown = fmt::format("{}_x{}.png", stem, k);
@@ -230,7 +233,7 @@ PairResult compare_pair(const BackendRender& ra, const BackendRender& rb, const 
   diff = paint(diff, only_a, kHitOnlyInA);
   diff = paint(diff, only_b, kHitOnlyInB);
   diff = paint(diff, both_differ, kDifferentPrimitive);
-  p.image = write_image(diff, dir, fmt::format("diff_{}_vs_{}", p.a, p.b));
+  p.image = write_image(diff, dir, fmt::format("diff_{}_vs_{}", p.a, p.b), /*difference=*/true);
   return p;
 }
 

@@ -99,6 +99,9 @@ constexpr double heat_value(int d, int P) { return d == 0 ? 0.0 : (d + 1.0) / (P
 // Images whose larger side is below this are also written enlarged (nearest neighbour, integer
 // factor k = max(2, 512 / side), file <name>_x<k>.png) and the report shows the enlarged copy.
 inline constexpr int kEnlargeBelow = 256;
+// Difference images up to this side are enlarged at least ×2 even from kEnlargeBelow on, so that
+// a single differing pixel can be seen (a 256×256 demo image's differences are shown at 512×512).
+inline constexpr int kDiffEnlargeUpTo = 1024;
 
 // metrics.json (and CompareSummary::metrics) holds: scene, width, height, pixels;
 // <a>_vs_<b>_mismatched_pixels for the four pairs (null when a render is missing); cycles, pairs,

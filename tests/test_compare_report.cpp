@@ -247,6 +247,24 @@ TEST(CompareReport, LargeImagesAreNotEnlarged) {
     EXPECT_EQ(entry.path().filename().string().find("_x"), std::string::npos) << entry.path();
 }
 
+// Difference images stay enlarged ×2 up to kDiffEnlargeUpTo, so that one differing pixel of a
+// 256×256 demo image is a 2×2 block; the renders are not.
+TEST(CompareReport, DifferenceImagesAreEnlargedUpToTheirLimit) {
+  for (const int side : {300, kDiffEnlargeUpTo + 1}) {
+    CompareInput in = full_input();
+    image::Frame a(side, 2), b(side, 2);
+    b.primitive[b.index(5, 1)] = 0;
+    in.renders = {{"ref", a, 0.0}, {"float-ip", b, 0.0}};
+    const fs::path dir = fresh_dir("diff_large_" + std::to_string(side));
+    write_compare_report(in, dir.string());
+    EXPECT_EQ(fs::exists(dir / "diff_ref_vs_float-ip_x2.png"), side <= kDiffEnlargeUpTo) << side;
+    EXPECT_FALSE(fs::exists(dir / "ref_x2.png")) << side;
+    if (side <= kDiffEnlargeUpTo) {
+      EXPECT_NE(read_text(dir / "report.html").find("diff_ref_vs_float-ip_x2.png"), std::string::npos);
+    }
+  }
+}
+
 TEST(CompareReport, DiffImageColours) {
   const fs::path dir = fresh_dir("diff");
   write_compare_report(full_input(), dir.string());
