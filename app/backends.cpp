@@ -1,6 +1,7 @@
 #include "backends.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "common/error.h"
 #include "model/descriptors.h"
@@ -60,6 +61,16 @@ nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch:
           {"fallback_converged", s.fallback_converged}};
 }
 
+namespace {
+
+// World units per unit of the model's depth c·S·2^(FE + kRayGuard) (docs/fixed-point.md), with
+// S this model's own normalisation.
+double model_depth_unit(const ref::ModelScene& m) {
+  return 1.0 / (m.norm.scale * std::ldexp(1.0, m.params.edge_frac + ref::HwParams::kRayGuard));
+}
+
+}  // namespace
+
 BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
                           const BackendOptions& o) {
   BackendResult r;
@@ -109,6 +120,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     r.precision_warning = model.precision.warning;
     ref::RefStats stats;
     r.render.frame = ref::render_ref(sc, model, o.ref, &stats);
+    r.render.depth_unit = model_depth_unit(model);
     r.pairs = stats.curve_pairs + stats.texture_pairs + stats.surface_pieces;
     r.overflows = stats.overflow_pairs;
   } else if (backend == "rtl") {
@@ -122,6 +134,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     ro.trace_pixel = o.trace_pixel;
     ro.trace_path = o.trace_path;
     const sim::RtlRender rr = sim::render_rtl(sc, model, ro);
+    r.render.depth_unit = model_depth_unit(model);
     r.render.frame = rr.frame;
     r.pairs = rr.stats.items;
     r.reports = rr.reports;

@@ -1,14 +1,12 @@
 #include "compare.h"
 
 #include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "common/error.h"
-#include "model/descriptors.h"
 #include "run_record.h"
 #include "scene/compiled_scene.h"
 
@@ -40,13 +38,6 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   in.config = config_json(o.backends);
   const auto t_start = std::chrono::steady_clock::now();
   for (const auto& p : sc.primitives) in.curve_primitive.push_back(p.kind == scene::Primitive::Kind::kCurve);
-  if (sc.patches.empty()) {
-    // The model's depth is c·S·2^(FE + kRayGuard) (docs/fixed-point.md): world units per unit.
-    const ref::ModelScene m = ref::quantize_scene(sc, o.backends.hw);
-    const double unit = 1.0 / (m.norm.scale * std::ldexp(1.0, o.backends.hw.edge_frac +
-                                                                 ref::HwParams::kRayGuard));
-    in.depth_unit["ref"] = in.depth_unit["rtl"] = unit;
-  }
   bool rtl_ok = false, rtl_ran = false;
   nlohmann::json not_applicable = nlohmann::json::array(), patch_stats;
   // A scene with surfaces (and no patches) still co-simulates its curves and textures: the RTL

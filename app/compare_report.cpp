@@ -516,10 +516,7 @@ std::string report_html(const ReportParts& r) {
 
 namespace {
 
-double depth_world(const CompareInput& in, const BackendRender& r, size_t k) {
-  const auto it = in.depth_unit.find(r.name);
-  return r.frame.depth[k] * (it == in.depth_unit.end() ? 1.0 : it->second);
-}
+double depth_world(const BackendRender& r, size_t k) { return r.frame.depth[k] * r.depth_unit; }
 
 // Pixels where two renders (every pair present, and rtl against its reference) disagree on the
 // primitive, in scan order, at most kMaxPixelRecords, with every render's primitive and depth.
@@ -550,7 +547,7 @@ nlohmann::json pixel_records(const CompareInput& in, size_t& total) {
         const std::int32_t p = r->frame.primitive[k];
         rec[r->name] = p == image::kBackground
                            ? nlohmann::json{{"primitive", nullptr}, {"depth", nullptr}}
-                           : nlohmann::json{{"primitive", p}, {"depth", depth_world(in, *r, k)}};
+                           : nlohmann::json{{"primitive", p}, {"depth", depth_world(*r, k)}};
       }
       list.push_back(rec);
     }
@@ -559,12 +556,12 @@ nlohmann::json pixel_records(const CompareInput& in, size_t& total) {
 
 // ref against float where both hit the same primitive: how many, and the relative depth
 // difference |c_ref − c_float| / c_float (mean, max, how many beyond kDepthAgreement).
-nlohmann::json depth_statistics(const CompareInput& in, const BackendRender& a, const BackendRender& b) {
+nlohmann::json depth_statistics(const BackendRender& a, const BackendRender& b) {
   size_t n = 0, beyond = 0;
   double sum = 0.0, max = 0.0;
   for (size_t k = 0; k < a.frame.primitive.size(); ++k) {
     if (a.frame.primitive[k] == image::kBackground || a.frame.primitive[k] != b.frame.primitive[k]) continue;
-    const double da = depth_world(in, a, k), db = depth_world(in, b, k);
+    const double da = depth_world(a, k), db = depth_world(b, k);
     const double rel = std::fabs(da - db) / std::max(std::fabs(db), 1e-300);
     ++n;
     sum += rel;
@@ -689,7 +686,7 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
   metrics["differing_pixels"] = pixel_records(in, differing);
   metrics["differing_pixels_total"] = differing;
   if (const BackendRender* ref = find("ref"), *fl = find("float"); ref && fl)
-    metrics["depth_ref_vs_float"] = depth_statistics(in, *ref, *fl);
+    metrics["depth_ref_vs_float"] = depth_statistics(*ref, *fl);
   else
     metrics["depth_ref_vs_float"] = nullptr;
   const bool any_curve = std::find(in.curve_primitive.begin(), in.curve_primitive.end(), true) !=

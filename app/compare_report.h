@@ -22,6 +22,9 @@ struct BackendRender {
   std::string name;    // "float", "float-ip", "ref", "rtl" (letters, digits, '-', '_' only)
   image::Frame frame;  // per pixel primitive id (image::kBackground = -1) and depth
   double seconds = 0;  // wall time of the render
+  // World units per unit of frame.depth: 1 for the float backends; ref and rtl keep the model's
+  // fixed-point depth c·S·2^(FE+14), whose scale S is that render's own normalisation.
+  double depth_unit = 1.0;
 };
 
 // Everything the report shows.
@@ -45,9 +48,6 @@ struct CompareInput {
   nlohmann::json record;
   // Per primitive id: true for a curve (the connectivity count follows curves).
   std::vector<bool> curve_primitive;
-  // World units per depth unit of each render's frame (ref and rtl keep the model's fixed-point
-  // depth c·S·2^(FE+14)); a render not named here is in world units.
-  std::map<std::string, double> depth_unit;
   nlohmann::json extra_metrics;  // merged into metrics.json at the top level (e.g. "patches",
                                  // "not_applicable"); may be null
 };

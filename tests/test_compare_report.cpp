@@ -164,7 +164,7 @@ TEST(CompareReport, EngineeringRecord) {
       if (r.frame.primitive[k] != image::kBackground) r.frame.depth[k] = r.name == "ref" ? 20.0 : 10.0;
   image::Frame& ref = in.renders[2].frame;
   ref.depth[ref.index(2, 2)] = 20.4;  // 2 % deeper than float there
-  in.depth_unit["ref"] = 0.5;
+  in.renders[2].depth_unit = 0.5;
   in.curve_primitive = {true, false, false};
   in.record = {{"command", "rpu compare builtin:synthetic --out x"}, {"git_commit", "abc123"}};
   const fs::path dir = fresh_dir("record");
