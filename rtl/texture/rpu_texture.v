@@ -268,11 +268,11 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The chord parameter t̂; the pair's context rides in the chord's tag.
   // ---------------------------------------------------------------------------------------------
-  localparam integer ChTgW = 2 + LoW;
+  localparam integer ChTagW = 2 + LoW;
   wire              ch_valid, ch_ovf;
   wire [TW-1:0]     ch_t;
-  wire [ChTgW-1:0] ch_tag_out;
-  rpu_chord #(.DotW(DotW), .InvW(InvW), .TFrac(TFrac), .ShW(7), .TagW(ChTgW)) u_chord (
+  wire [ChTagW-1:0] ch_tag_out;
+  rpu_chord #(.DotW(DotW), .InvW(InvW), .TFrac(TFrac), .ShW(7), .TagW(ChTagW)) u_chord (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .valid_i(s3_valid_q),
@@ -300,14 +300,14 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The two guides at t̂; what the curve point and the end need rides in guide 1's tag.
   // ---------------------------------------------------------------------------------------------
-  localparam integer G1TgW = TgW + 2 + W02W + 6 * CW + 3 * DW + 6 * UW + TW + 1;
+  localparam integer G1TagW = TgW + 2 + W02W + 6 * CW + 3 * DW + 6 * UW + TW + 1;
   localparam integer RadW   = 2 * CW + 10;
   wire              g1_valid, g1_ovf;
   wire [GW-1:0]     g1, g2;
   wire [TFrac-2:0]  w_unused;
-  wire [G1TgW-1:0] g1_tag_out;
+  wire [G1TagW-1:0] g1_tag_out;
   // One texture item per cycle: the pair squares h itself (HhIn = 0).
-  rpu_guide_pair #(.CoordW(CW), .TFrac(TFrac), .SqrtW(SqrtW), .HhIn(0), .TagW(G1TgW)) u_guides (
+  rpu_guide_pair #(.CoordW(CW), .TFrac(TFrac), .SqrtW(SqrtW), .HhIn(0), .TagW(G1TagW)) u_guides (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .valid_i(ch_valid),
@@ -339,11 +339,11 @@ module rpu_texture #(
   // ---------------------------------------------------------------------------------------------
   // The curve point X = s(t̂).
   // ---------------------------------------------------------------------------------------------
-  localparam integer CpTgW = TgW + 2 + W02W + 3 * CW + TW + 1;
+  localparam integer CpTagW = TgW + 2 + W02W + 3 * CW + TW + 1;
   wire              cp_valid;
   wire [3*XW-1:0]   cp_x;
-  wire [CpTgW-1:0] cp_tag_out;
-  rpu_curve_point #(.CoordW(CW), .TFrac(TFrac), .UnitFrac(UnitFrac), .TagW(CpTgW)) u_cp (
+  wire [CpTagW-1:0] cp_tag_out;
+  rpu_curve_point #(.CoordW(CW), .TFrac(TFrac), .UnitFrac(UnitFrac), .TagW(CpTagW)) u_cp (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .valid_i(g1_valid),
