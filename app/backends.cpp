@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "common/error.h"
 #include "model/descriptors.h"
@@ -130,6 +131,11 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     sim::RtlOptions ro;
     ro.ref = o.ref;
     ro.systemc = o.systemc;
+    ro.external_exe = o.rtl_exe;
+    ro.jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    ro.shard = o.shard;
+    ro.shard_out = o.shard_out;
+    ro.merge_shards = o.merge_shards;
     ro.fault = o.fault;
     ro.trace_pixel = o.trace_pixel;
     ro.trace_path = o.trace_path;
@@ -153,6 +159,13 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
              {"load_cycles", s.load_cycles},
              {"items_per_cycle", s.items_per_cycle()},
              {"sim_seconds", s.sim_seconds},
+             {"instances", rr.instances.size()},
+             {"frame_cycles", rr.frame_cycles},
+             {"instance_cycles", [&rr] {
+                nlohmann::json a = nlohmann::json::array();
+                for (const sim::CosimStats& i : rr.instances) a.push_back(i.cycles);
+                return a;
+              }()},
              {"items_per_second", s.sim_seconds > 0 ? s.items / s.sim_seconds : 0.0},
              {"cycles_per_second", s.sim_seconds > 0 ? s.cycles / s.sim_seconds : 0.0},
              {"item_mismatches", rr.item_mismatches},

@@ -26,6 +26,11 @@ struct BackendOptions {
   patch::PatchRenderOptions patch;  // float, float-ip: method, map of the patches
                                     // (docs/algorithms.md §4)
   bool systemc = false;             // rtl: the SystemC harness instead of the C++ one
+  std::string rtl_exe;              // rtl: a cosim_<name> executable (--rtl-exe)
+  int jobs = 0;                     // rtl: instances over contiguous shares (0 = all cores)
+  std::optional<std::pair<int, int>> shard;  // rtl: only share I of N (--shard)
+  std::string shard_out;                     // rtl: where --shard writes the share's results
+  std::vector<std::string> merge_shards;     // rtl: shard files to check and assemble
   int fault = 0;                    // rtl: the fault-injected build's fault (checker tests;
                                     // sim::RtlOptions::fault)
   std::optional<std::pair<int, int>> trace_pixel;  // rtl: re-run a pixel with a waveform

@@ -14,6 +14,9 @@
 #include <new>
 #include <string_view>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "backends.h"
 #include "builtin_scenes.h"
 #include "compare.h"
@@ -56,6 +59,10 @@ struct CommonFlags {
   std::string trace_pixel;   // X,Y
   std::string trace_out = "trace.fst";
   std::string rtl_fault;
+  std::string rtl_exe;       // a cosim_<name> executable instead of a built-in configuration
+  long long jobs = 0;        // rtl: Verilated instances over contiguous shares (0 = all cores)
+  std::string shard;         // rtl: I/N, only that share, its results to -o
+  std::vector<std::string> merge_shards;  // rtl: shard files to check and assemble
   std::string patch_method = "thesis";  // docs/algorithms.md §4: thesis | martin | newton
   std::string patch_map_size;           // WxH of the preliminary map ("" = the image's)
   bool patch_map_full = false;          // full-precision map parameters instead of 8 bits
@@ -71,6 +78,22 @@ struct CommonFlags {
     app.add_option("--size", size, "image size WxH, overriding the scene's camera");
     app.add_option("--max-side", max_side, "scale the scene's image down to at most this side");
     app.add_flag("--systemc", systemc, "rtl: use the SystemC harness (rpu_sc) instead of the C++ one");
+    app.add_option("--rtl-exe", rtl_exe,
+                   "rtl: run the frame on this co-simulation executable (a cosim_<name> built with "
+                   "RPU_COSIM_ONLY, e.g. by rpu sweep or scripts/cosim_build_table.py; "
+                   "docs/cosim.md) instead of a configuration built into rpu");
+    app.add_option("--jobs", jobs,
+                   "rtl: co-simulate the frame on this many Verilated instances at once, each a "
+                   "contiguous share of the work items on its own core, as that many units on one "
+                   "device (0 = all cores; the image and every result are the same as with 1)")
+        ->capture_default_str();
+    app.add_option("--shard", shard,
+                   "rtl: I/N: co-simulate only share I (0-based) of N and write its checked "
+                   "results to -o (a shard file, not an image); merge with --merge-shards "
+                   "(docs/cosim.md, e.g. a Slurm job array)");
+    app.add_option("--merge-shards", merge_shards,
+                   "rtl: check the shard files of --shard I/N (all N, same scene and flags) "
+                   "against the model and assemble the image (-o) instead of simulating");
     app.add_option("--trace-pixel", trace_pixel,
                    "rtl: re-run the work items of pixel X,Y with an FST waveform");
     app.add_option("--trace-out", trace_out, "rtl: the waveform file of --trace-pixel")
@@ -100,6 +123,9 @@ struct CommonFlags {
   // Refuses out-of-range flags shared by every subcommand (common/limits.h).
   void validate() const {
     limits::check_threads("--threads", threads);
+    if (jobs < 0 || jobs > limits::kMaxCosimJobs)
+      throw Error("--jobs", fmt::format("must be in [0, {}] (0 = all cores), got {}",
+                                        limits::kMaxCosimJobs, jobs));
     if (max_side < 0) throw Error("--max-side", "must be at least 1 (0 = off), got " +
                                                 std::to_string(max_side));
   }
@@ -157,6 +183,33 @@ struct CommonFlags {
     o.ref = ref_options();
     o.patch = patch_options();
     o.systemc = systemc;
+    o.rtl_exe = rtl_exe;
+    o.jobs = static_cast<int>(jobs);
+    o.merge_shards = merge_shards;
+    if (!shard.empty()) {
+      int i = -1, n = -1;
+      char c = 0, extra = 0;
+      if (std::sscanf(shard.c_str(), "%d%c%d%c", &i, &c, &n, &extra) != 3 || c != '/' || n < 1 ||
+          i < 0 || i >= n || n > limits::kMaxShards)
+        throw Error("--shard", fmt::format("must be I/N with 0 <= I < N <= {}, got '{}'",
+                                           limits::kMaxShards, shard));
+      o.shard = std::make_pair(i, n);
+      if (!merge_shards.empty())
+        throw Error("--shard", "cannot be combined with --merge-shards (one runs a share, the "
+                               "other merges them)");
+    }
+    if (!rtl_exe.empty()) {
+      if (systemc) throw Error("--rtl-exe", "cannot be combined with --systemc (rpu_sc is one harness, "
+                                            "--rtl-exe another)");
+      if (rtl_fault_code(rtl_fault) != 0)
+        throw Error("--rtl-exe", "cannot be combined with --rtl-fault (the fault-injected build is "
+                                 "built into rpu)");
+      struct stat st {};
+      if (::stat(rtl_exe.c_str(), &st) != 0 || !S_ISREG(st.st_mode) ||
+          ::access(rtl_exe.c_str(), X_OK) != 0)
+        throw Error("--rtl-exe", "'" + rtl_exe + "' is not an executable file (a cosim_<name> "
+                                 "from an RPU_COSIM_ONLY build)");
+    }
     o.fault = rtl_fault_code(rtl_fault);
     o.trace_path = trace_out;
     if (!trace_pixel.empty()) {
@@ -219,11 +272,21 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   const auto& names = app::backend_names();
   if (std::find(names.begin(), names.end(), backend) == names.end())
     throw Error("--backend", "unknown backend '" + backend + "' (float, float-ip, ref, rtl)");
-  const app::BackendOptions bo = flags.backend_options();
-  if ((bo.systemc || bo.trace_pixel || bo.fault) && backend != "rtl")
-    throw Error(bo.systemc ? "--systemc" : bo.fault ? "--rtl-fault" : "--trace-pixel",
+  app::BackendOptions bo = flags.backend_options();
+  bo.shard_out = output;  // --shard: -o is the share's result file
+  if ((bo.systemc || bo.trace_pixel || bo.fault || !bo.rtl_exe.empty() || bo.shard ||
+       !bo.merge_shards.empty()) && backend != "rtl")
+    throw Error(bo.systemc ? "--systemc" : bo.fault ? "--rtl-fault" :
+                !bo.rtl_exe.empty() ? "--rtl-exe" : bo.shard ? "--shard" :
+                !bo.merge_shards.empty() ? "--merge-shards" : "--trace-pixel",
                 "applies to --backend rtl only");
-  image::check_writable(output);
+  if (bo.shard && bo.trace_pixel)
+    throw Error("--shard", "cannot be combined with --trace-pixel (trace the pixel in a whole-frame run)");
+  if (!bo.merge_shards.empty() && (bo.trace_pixel || bo.systemc || !bo.rtl_exe.empty() || bo.fault))
+    throw Error("--merge-shards", "only checks and assembles shard files; --trace-pixel, --systemc, "
+                                  "--rtl-exe and --rtl-fault belong to the --shard runs");
+  if (bo.shard) check_output_path(output, "shard file");
+  else image::check_writable(output);
   if (same_file(scene_arg, output))
     throw Error(output, "is the scene file being rendered; refusing to overwrite the input");
   const scene::CompiledScene sc = scene::compile_scene(flags.load(scene_arg));
@@ -234,6 +297,23 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
     throw Error("--shade", "changes nothing: " + scene_arg + " has no surfaces or patches "
                            "(curves and textures are drawn in exact colours)");
   const app::BackendResult r = app::run_backend(backend, sc, bo);
+  if (bo.shard) {
+    if (!quiet)
+      std::cerr << fmt::format("{}: share {} of {} of the {}x{} frame, {} work items, {} cycles "
+                               "({} harness, {}), {:.0f} items/s; checked against the model: {}\n",
+                               output, bo.shard->first, bo.shard->second, sc.camera.width,
+                               sc.camera.height, r.pairs, r.rtl["cycles"].dump(),
+                               r.rtl["harness"].get<std::string>(),
+                               r.rtl["configuration"].get<std::string>(),
+                               r.rtl["items_per_second"].get<double>(),
+                               r.rtl_ok ? "equal" : "DIFFERENT");
+    for (const auto& line : r.reports) std::cerr << line << "\n";
+    if (!r.rtl_ok) {
+      std::cerr << "rpu: the RTL differs from the reference model (see above)\n";
+      return 2;
+    }
+    return 0;
+  }
   const image::Frame& frame = r.render.frame;
   std::vector<scene::Color> colors;
   for (const auto& p : sc.primitives) colors.push_back(p.color);
@@ -273,12 +353,19 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   if (backend == "rtl") {
     if (!quiet)
       std::cerr << fmt::format("rtl ({} harness, {}): {} cycles, latency {}, {:.3f} items/cycle, "
-                               "{:.0f} items/s, {:.0f} cycles/s simulated\n",
+                               "{:.0f} items/s, {:.0f} cycles/s simulated{}\n",
                                r.rtl["harness"].get<std::string>(),
                                r.rtl["configuration"].get<std::string>(), r.rtl["cycles"].dump(),
                                r.rtl["latency_cycles"].dump(), r.rtl["items_per_cycle"].get<double>(),
                                r.rtl["items_per_second"].get<double>(),
-                               r.rtl["cycles_per_second"].get<double>());
+                               r.rtl["cycles_per_second"].get<double>(),
+                               r.rtl["instances"].get<int>() > 1
+                                   ? fmt::format("; {} instances (cycles {}), the frame {} cycles "
+                                                 "on that many units",
+                                                 r.rtl["instances"].dump(),
+                                                 r.rtl["instance_cycles"].dump(),
+                                                 r.rtl["frame_cycles"].dump())
+                                   : std::string());
     for (const auto& line : r.reports) std::cerr << line << "\n";
     if (!r.trace_log.empty()) std::cerr << r.trace_log;
     if (!r.rtl_ok) {
@@ -437,19 +524,23 @@ int main(int argc, char** argv) {
       refuse_flags(*config_cmd,
                    {"--size", "--max-side", "--systemc", "--trace-pixel", "--trace-out",
                     "--rtl-fault", "--patch-method", "--patch-map-size", "--patch-map-full",
-                    "--patch-start", "--patch-tolerance", "--patch-iterations"},
+                    "--patch-start", "--patch-tolerance", "--patch-iterations", "--rtl-exe",
+                    "--jobs", "--shard", "--merge-shards"},
                    "it prints the parameter set and renders nothing");
       if (!markdown.empty()) return check_stdout(print_markdown(*config_cmd, flags, markdown));
       return check_stdout(print_config(flags));
     }
     if (compare_cmd->parsed()) {
+      refuse_flags(*compare_cmd, {"--shard", "--merge-shards"},
+                   "shards are co-simulated and merged with rpu render --backend rtl");
       compare.backends = flags.backend_options();
       compare.command = app::command_line(argc, argv);
       if (!compare_scene.starts_with("builtin:")) compare.input_file = compare_scene;
       return app::run_compare(compare_scene, flags.load(compare_scene), compare);
     }
     if (demo_cmd->parsed()) {
-      refuse_flags(*demo_cmd, {"--trace-pixel", "--trace-out", "--rtl-fault"},
+      refuse_flags(*demo_cmd, {"--trace-pixel", "--trace-out", "--rtl-fault", "--rtl-exe", "--shard",
+                               "--merge-shards"},
                    "it compares every built-in scene; use rpu render or rpu compare on one scene");
       demo.compare.backends = flags.backend_options();
       demo.compare.command = app::command_line(argc, argv);

@@ -64,7 +64,10 @@ std::map<std::string, std::string> build_cosim(const std::vector<const SweepConf
     }
     if (has_builtin_rtl(c->params)) continue;
     if (!fs::exists(dir / ("cosim_" + cosim_name(*c)), ec)) ++need;
-    list += (list.empty() ? "" : ";") + cosim_name(*c) + ":" + verilog_params(*c);
+    if (!list.empty()) list += ';';
+    list += cosim_name(*c);
+    list += ':';
+    list += verilog_params(*c);
   }
   if (need > 0) {
     const fs::path log = dir / "build.log";

@@ -87,6 +87,11 @@ inline constexpr long long kMaxVolumeWork = 1LL << 30;
 inline constexpr long long kMaxSweepConfigurations = 10000;
 inline constexpr int kMaxThreads = 1024;
 
+// Co-simulation: Verilated instances at once in one process (`--jobs`; each holds a whole model
+// of rpu_top), and shares of one frame (`--shard I/N`, e.g. the tasks of a Slurm job array).
+inline constexpr int kMaxCosimJobs = 64;
+inline constexpr int kMaxShards = 100000;
+
 // Throws rpu::Error(where, ...) unless 1 <= width, height <= kMaxImageSide and
 // width * height <= kMaxImagePixels.
 void check_image_size(const std::string& where, long long width, long long height);

@@ -6,12 +6,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <exception>
 #include <filesystem>
+#include <thread>
 
 #include <fmt/format.h>
 
 #include "common/error.h"
 #include "common/output_file.h"
+#include "frame_share.h"
 #include "stream_file.h"
 #include "top_ports.h"
 
@@ -68,16 +73,13 @@ StreamRecord run_external(const std::string& exe, const FrameSchedule& f, const 
   return r;
 }
 
-StreamRecord run_systemc(const FrameSchedule& f, const RtlOptions& o, std::string* config) {
-  if (f.params != systemc_params() || o.fault)
-    throw Error("--systemc", "the SystemC model is built for " + describe(systemc_params()) +
-                             " only (add --ip iterative at the default widths)");
+// The SystemC harness executable (rpu_sc, beside this program unless RtlOptions::sc_exe).
+std::string systemc_exe(const RtlOptions& o) {
   const std::string exe = o.sc_exe.empty() ? (self_dir() / "rpu_sc").string() : o.sc_exe;
   if (!std::filesystem::exists(exe))
     throw Error("--systemc", "the SystemC harness " + exe + " is not built (configure with "
                 "RPU_SIM=ON and SystemC installed)");
-  *config = "systemc:" + describe(f.params);
-  return run_external(exe, f, o);
+  return exe;
 }
 
 }  // namespace
@@ -106,25 +108,22 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
                               static_cast<unsigned long long>(fsize.rlim_cur)));
   }
   const FrameSchedule f = schedule_frame(sc, m, o.ref);
-  Scoreboard sb(f, m, o.max_reports);
   RtlRender out;
   const RtlConfig* cfg = nullptr;
   for (const RtlConfig& c : rtl_configs())
     if (c.fault == (o.fault != 0) && c.params == m.params) cfg = &c;
-  if (o.systemc || !o.external_exe.empty()) {
+  const bool external = o.systemc || !o.external_exe.empty();
+  if (external) {
     out.harness = o.systemc ? "systemc" : "c++ (external)";
-    StreamRecord r;
     if (o.systemc) {
-      r = run_systemc(f, o, &out.config);
+      if (f.params != systemc_params() || o.fault)
+        throw Error("--systemc", "the SystemC model is built for " + describe(systemc_params()) +
+                                 " only (add --ip iterative at the default widths)");
+      out.config = "systemc:" + describe(f.params);
     } else {
-      r = run_external(o.external_exe, f, o);
       out.config = std::filesystem::path(o.external_exe).filename().string();
     }
-    for (const ItemResult& x : r.results) sb.on_result(x);
-    for (const PixelResult& x : r.pixels) sb.on_pixel(x);
-    out.stats = r.stats;
-    if (r.stats.timed_out) sb.note("TIMEOUT in the " + out.harness + " harness");
-  } else {
+  } else if (o.merge_shards.empty()) {
     if (!cfg) {
       std::string names;
       for (const RtlConfig& c : rtl_configs())
@@ -137,16 +136,176 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     }
     out.harness = "c++";
     out.config = cfg->name;
-    g_rtl_fault = o.fault;  // read by the RTL when the model is built
-    auto top = cfg->make(o.x_seed);
-    out.stats = cosim_frame(*top, f, sb, o.cosim);
   }
-  out.frame = sb.frame();
-  out.item_mismatches = sb.item_mismatches();
-  out.pixel_mismatches = sb.pixel_mismatches();
-  out.reports = sb.reports();
-  out.first_bad = sb.first_bad_pixel();
-  out.ok = sb.ok() && !out.stats.timed_out;
+  g_rtl_fault = o.fault;  // read by the RTL when a model is built
+
+  // The shares: the whole frame split over --jobs instances, one share of --shard I/N, or the
+  // shares of the shard files being merged.
+  std::vector<FrameShare> shares;
+  std::vector<ShardRecord> merged;
+  if (!o.merge_shards.empty()) {
+    const std::uint64_t digest = schedule_digest(f);
+    for (const std::string& path : o.merge_shards) merged.push_back(read_shard(path));
+    const int count = merged.front().share.count;
+    const std::vector<FrameShare> want = split_frame(f, count);
+    std::vector<int> seen(static_cast<std::size_t>(count), -1);
+    for (std::size_t k = 0; k < merged.size(); ++k) {
+      const ShardRecord& r = merged[k];
+      const std::string& path = o.merge_shards[k];
+      if (r.digest != digest)
+        throw Error(path, "is a shard of another frame (another scene, size or hardware "
+                          "parameters than this command's)");
+      if (r.share.count != count)
+        throw Error(path, fmt::format("is share {} of {}, but {} is a share of {}", r.share.index,
+                                      r.share.count, o.merge_shards.front(), count));
+      const FrameShare& w = want[static_cast<std::size_t>(r.share.index)];
+      if (r.share.index < 0 || r.share.index >= count || r.share.first_item != w.first_item ||
+          r.share.end_item != w.end_item || r.share.first_pixel != w.first_pixel ||
+          r.share.end_pixel != w.end_pixel)
+        throw Error(path, "holds a share this frame does not cut (a corrupt or foreign shard)");
+      int& prev = seen[static_cast<std::size_t>(r.share.index)];
+      if (prev >= 0)
+        throw Error(path, fmt::format("repeats share {} of {} (also in {})", r.share.index, count,
+                                      o.merge_shards[static_cast<std::size_t>(prev)]));
+      prev = static_cast<int>(k);
+    }
+    std::string missing;
+    for (int k = 0; k < count; ++k)
+      if (seen[static_cast<std::size_t>(k)] < 0) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    if (!missing.empty())
+      throw Error("--merge-shards", fmt::format("{} {} of {} {} missing",
+                                                missing.find(',') == std::string::npos ? "share" : "shares",
+                                                missing, count,
+                                                missing.find(',') == std::string::npos ? "is" : "are"));
+    std::sort(merged.begin(), merged.end(),
+              [](const ShardRecord& a, const ShardRecord& b) { return a.share.index < b.share.index; });
+    for (const ShardRecord& r : merged) shares.push_back(r.share);
+    out.harness = "shards";
+    out.config = merged.front().config;
+  } else if (o.shard) {
+    const auto [index, count] = *o.shard;
+    if (count < 1 || index < 0 || index >= count)
+      throw Error("--shard", fmt::format("must be I/N with 0 <= I < N, got {}/{}", index, count));
+    shares.push_back(split_frame(f, count)[static_cast<std::size_t>(index)]);
+  } else {
+    const int jobs = std::max(1, std::min<int>(o.jobs, static_cast<int>(std::max<std::size_t>(
+                                                           1, f.expected_pixels.size()))));
+    shares = split_frame(f, jobs);
+  }
+
+  // Each share as a frame of its own, checked by its own scoreboard.
+  struct Run {
+    FrameSchedule f;
+    std::unique_ptr<Scoreboard> sb;
+    CosimStats stats;
+    StreamRecord rec;  // --shard: what is written
+    std::exception_ptr error;
+  };
+  std::vector<Run> runs(shares.size());
+  for (std::size_t k = 0; k < shares.size(); ++k) {
+    runs[k].f = share_schedule(f, shares[k]);
+    runs[k].sb = std::make_unique<Scoreboard>(runs[k].f, m, o.max_reports);
+  }
+  // Records every stream word and forwards it to the share's scoreboard (--shard).
+  class Tee final : public ResultSink {
+   public:
+    Tee(Scoreboard& sb, StreamRecord& r) : sb_(sb), r_(r) {}
+    void on_result(const ItemResult& a) override { r_.results.push_back(a); sb_.on_result(a); }
+    void on_pixel(const PixelResult& a) override { r_.pixels.push_back(a); sb_.on_pixel(a); }
+    bool done() const override { return sb_.done(); }
+    void note(const std::string& line) override { sb_.note(line); }
+    std::size_t results() const override { return sb_.results(); }
+    std::size_t pixels() const override { return sb_.pixels(); }
+    std::size_t hits() const override { return sb_.hits(); }
+
+   private:
+    Scoreboard& sb_;
+    StreamRecord& r_;
+  };
+  const auto run_one = [&](Run& run) {
+    try {
+      if (!merged.empty()) {
+        const ShardRecord& r = merged[static_cast<std::size_t>(&run - runs.data())];
+        for (const ItemResult& x : r.streams.results) run.sb->on_result(x);
+        for (const PixelResult& x : r.streams.pixels) run.sb->on_pixel(x);
+        run.stats = r.streams.stats;
+      } else if (external) {
+        StreamRecord r = run_external(o.systemc ? systemc_exe(o) : o.external_exe, run.f, o);
+        for (const ItemResult& x : r.results) run.sb->on_result(x);
+        for (const PixelResult& x : r.pixels) run.sb->on_pixel(x);
+        run.stats = r.stats;
+        if (o.shard) run.rec = std::move(r);
+      } else {
+        auto top = cfg->make(o.x_seed);
+        Tee tee(*run.sb, run.rec);
+        ResultSink& sink = o.shard ? static_cast<ResultSink&>(tee) : *run.sb;
+        run.stats = cosim_frame(*top, run.f, sink, o.cosim);
+      }
+      if (run.stats.timed_out) run.sb->note("TIMEOUT in the " + out.harness + " harness");
+    } catch (...) {
+      run.error = std::current_exception();
+    }
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  if (runs.size() == 1) {
+    run_one(runs[0]);
+  } else {
+    std::vector<std::thread> pool;
+    for (Run& run : runs) pool.emplace_back(run_one, std::ref(run));
+    for (std::thread& t : pool) t.join();
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const Run& run : runs)
+    if (run.error) std::rethrow_exception(run.error);
+
+  // The frame from every share's pixels; the statistics summed over the instances (the frame's
+  // own duration on N units is the longest instance: frame_cycles).
+  out.frame = image::Frame(f.width, f.height);
+  CosimStats& st = out.stats;
+  bool ok = true;
+  for (const Run& run : runs) {
+    const image::Frame& part = run.sb->frame();
+    for (std::size_t k = 0; k < part.primitive.size(); ++k)
+      if (part.primitive[k] != image::kBackground) {
+        out.frame.primitive[k] = part.primitive[k];
+        out.frame.depth[k] = part.depth[k];
+      }
+    const CosimStats& s = run.stats;
+    out.instances.push_back(s);
+    st.cycles += s.cycles;
+    st.load_cycles += s.load_cycles;
+    st.items += s.items;
+    st.curve_items += s.curve_items;
+    st.texture_items += s.texture_items;
+    st.pixels += s.pixels;
+    st.hits += s.hits;
+    st.stall_cycles += s.stall_cycles;
+    st.latency_cycles = std::max(st.latency_cycles, s.latency_cycles);
+    st.timed_out = st.timed_out || s.timed_out;
+    out.frame_cycles = std::max(out.frame_cycles, s.cycles);
+    out.item_mismatches += run.sb->item_mismatches();
+    out.pixel_mismatches += run.sb->pixel_mismatches();
+    for (const std::string& r : run.sb->reports())
+      if (static_cast<int>(out.reports.size()) < o.max_reports) out.reports.push_back(r);
+    if (out.first_bad.first < 0) out.first_bad = run.sb->first_bad_pixel();
+    ok = ok && run.sb->ok() && !s.timed_out;
+  }
+  // Merged shards ran on other processes or machines: their own longest cycle loop.
+  st.sim_seconds = wall;
+  if (!merged.empty()) {
+    st.sim_seconds = 0;
+    for (const Run& run : runs) st.sim_seconds = std::max(st.sim_seconds, run.stats.sim_seconds);
+  }
+  out.ok = ok;
+  if (o.shard) {
+    ShardRecord r;
+    r.digest = schedule_digest(f);
+    r.share = shares.front();
+    r.config = out.config;
+    r.streams = std::move(runs.front().rec);
+    r.streams.stats = runs.front().stats;
+    write_shard(o.shard_out, r);
+  }
   if (o.trace_pixel) {
     if (!cfg || !cfg->traceable)
       throw Error("--trace-pixel", fmt::format("the configuration {} is not built with FST "

@@ -28,11 +28,21 @@ struct RtlOptions {
   int max_reports = 8;          // mismatches reported in full
   std::optional<std::pair<int, int>> trace_pixel;  // re-run this pixel with an FST waveform
   std::string trace_path = "trace.fst";
+  // Frame-parallel co-simulation (frame_share.h): the frame's work items in `jobs` contiguous
+  // shares, each on its own Verilated instance (or harness process) and thread.
+  int jobs = 1;
+  // Only share I of N (`--shard I/N`), its recorded streams written to shard_out.
+  std::optional<std::pair<int, int>> shard;
+  std::string shard_out;
+  // Check and assemble these shard files (`--merge-shards`) instead of simulating.
+  std::vector<std::string> merge_shards;
 };
 
 struct RtlRender {
-  image::Frame frame;           // from rpu_top's pixel stream
-  CosimStats stats;
+  image::Frame frame;           // from rpu_top's pixel stream (every share's)
+  CosimStats stats;             // summed over the instances (sim_seconds: the wall time)
+  std::vector<CosimStats> instances;  // per instance (share), in frame order
+  std::uint64_t frame_cycles = 0;     // the longest instance: the frame on N parallel units
   std::string config;           // the Verilated configuration's name
   std::string harness;          // "c++" or "systemc"
   std::size_t item_mismatches = 0, pixel_mismatches = 0;

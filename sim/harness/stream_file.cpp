@@ -14,6 +14,8 @@ namespace {
 
 constexpr std::uint32_t kJobMagic = 0x52505531;     // "RPU1"
 constexpr std::uint32_t kStreamMagic = 0x52505532;  // "RPU2"
+constexpr std::uint32_t kShardMagic = 0x52505533;   // "RPU3"
+constexpr std::uint32_t kShardVersion = 1;
 
 class Writer {
  public:
@@ -187,9 +189,9 @@ FrameSchedule read_job(const std::string& path) {
   return f;
 }
 
-void write_streams(const std::string& path, const StreamRecord& s) {
-  Writer w(path);
-  w.u32(kStreamMagic);
+namespace {
+
+void put_streams(Writer& w, const StreamRecord& s) {
   const CosimStats& st = s.stats;
   for (std::uint64_t v : {st.cycles, st.load_cycles, st.items, st.curve_items, st.texture_items,
                           st.pixels, st.hits, st.latency_cycles, st.stall_cycles})
@@ -218,12 +220,9 @@ void write_streams(const std::string& path, const StreamRecord& s) {
     w.i128v(p.depth);
     w.u32(p.primitive);
   }
-  w.close();
 }
 
-StreamRecord read_streams(const std::string& path) {
-  Reader r(path);
-  if (r.u32() != kStreamMagic) throw Error(path, "not an rpu co-simulation stream file");
+StreamRecord get_streams(Reader& r) {
   StreamRecord s;
   CosimStats& st = s.stats;
   for (std::uint64_t* v : {&st.cycles, &st.load_cycles, &st.items, &st.curve_items,
@@ -258,6 +257,56 @@ StreamRecord read_streams(const std::string& path) {
     p.depth = r.i128v();
     p.primitive = r.u32();
   }
+  return s;
+}
+
+}  // namespace
+
+void write_streams(const std::string& path, const StreamRecord& s) {
+  Writer w(path);
+  w.u32(kStreamMagic);
+  put_streams(w, s);
+  w.close();
+}
+
+StreamRecord read_streams(const std::string& path) {
+  Reader r(path);
+  if (r.u32() != kStreamMagic) throw Error(path, "not an rpu co-simulation stream file");
+  return get_streams(r);
+}
+
+void write_shard(const std::string& path, const ShardRecord& s) {
+  Writer w(path);
+  w.u32(kShardMagic);
+  w.u32(kShardVersion);
+  w.u64(s.digest);
+  w.u32(static_cast<std::uint32_t>(s.share.index));
+  w.u32(static_cast<std::uint32_t>(s.share.count));
+  for (std::size_t v : {s.share.first_item, s.share.end_item, s.share.first_pixel,
+                        s.share.end_pixel})
+    w.u64(v);
+  w.text(s.config);
+  put_streams(w, s.streams);
+  w.close();
+}
+
+ShardRecord read_shard(const std::string& path) {
+  Reader r(path);
+  if (r.u32() != kShardMagic)
+    throw Error(path, "not an rpu shard file (written by `rpu render --backend rtl --shard I/N`)");
+  const std::uint32_t version = r.u32();
+  if (version != kShardVersion)
+    throw Error(path, fmt::format("shard file format {}, this program reads format {} (written by "
+                                  "another version of rpu)", version, kShardVersion));
+  ShardRecord s;
+  s.digest = r.u64();
+  s.share.index = static_cast<int>(r.u32());
+  s.share.count = static_cast<int>(r.u32());
+  for (std::size_t* v : {&s.share.first_item, &s.share.end_item, &s.share.first_pixel,
+                         &s.share.end_pixel})
+    *v = static_cast<std::size_t>(r.u64());
+  s.config = r.text();
+  s.streams = get_streams(r);
   return s;
 }
 

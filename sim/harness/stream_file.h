@@ -9,6 +9,7 @@
 
 #include "cosim.h"
 #include "frame_schedule.h"
+#include "frame_share.h"
 
 namespace rpu::sim {
 
@@ -28,5 +29,16 @@ void write_job(const std::string& path, const FrameSchedule& f);
 FrameSchedule read_job(const std::string& path);
 void write_streams(const std::string& path, const StreamRecord& r);
 StreamRecord read_streams(const std::string& path);
+
+// A shard file (`rpu render --backend rtl --shard I/N`): one share's recorded streams, with the
+// frame's digest (schedule_digest) and the share's place; `--merge-shards` reads them back.
+struct ShardRecord {
+  std::uint64_t digest = 0;
+  FrameShare share;
+  std::string config;  // the Verilated configuration or harness that ran it
+  StreamRecord streams;
+};
+void write_shard(const std::string& path, const ShardRecord& r);
+ShardRecord read_shard(const std::string& path);
 
 }  // namespace rpu::sim

@@ -59,6 +59,12 @@ add_test(NAME rtl_compare_surf_mix COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:
 list(APPEND rtl_tests rtl_compare_far_camera rtl_compare_pixel_edge rtl_compare_star_joins
      rtl_compare_surf_mix)
 
+# Frame-parallel co-simulation: --jobs and --shard/--merge-shards give the one-instance image.
+add_test(NAME rtl_frame_parallel COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         -DOUT=${RPU_CMP_OUT}/frame_parallel "-DARGS=builtin:curve12;--size;40x40"
+         -P ${PROJECT_SOURCE_DIR}/tests/rtl_shards.cmake)
+list(APPEND rtl_tests rtl_frame_parallel)
+
 # The main job's command at a small size: every scene compared concurrently, the index written.
 add_test(NAME rtl_demo COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
          "-DARGS=demo;--max-side;40;--out;${RPU_CMP_OUT}/demo"
