@@ -695,6 +695,15 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
     metrics["curve_gaps_vs_float"] = curve_connectivity(in, *fl);
   else
     metrics["curve_gaps_vs_float"] = nullptr;
+  // How much slower the cycle-accurate co-simulation is than the model on the same frame (each
+  // backend's wall time; the model's render of what the RTL draws when that is a part).
+  {
+    const BackendRender* rtl = find("rtl");
+    const BackendRender* model = in.rtl_reference ? &*in.rtl_reference : find("ref");
+    metrics["rtl_to_model_time"] = rtl && model && model->seconds > 0
+                                       ? nlohmann::json(rtl->seconds / model->seconds)
+                                       : nlohmann::json();
+  }
   metrics["rtl_scope"] = !find("rtl")           ? nlohmann::json()
                          : in.rtl_scope.empty() ? nlohmann::json("the whole scene")
                                                 : nlohmann::json(in.rtl_scope);

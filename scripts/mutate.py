@@ -152,10 +152,13 @@ def cmake_env() -> dict:
     return env
 
 
-def configure(build: Path, mutant_dir: Path | None) -> None:
+def configure(build: Path, mutant_dir: Path | None, only: list[str]) -> None:
     build.mkdir(parents=True, exist_ok=True)
+    # RPU_SIM_ONLY: only the plan's testbenches are Verilated (a configure of the whole suite
+    # runs Verilator on every testbench and rpu_top configuration: minutes).
     cmd = ["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-           "-DRPU_BENCH=OFF", f"-DRPU_MUTANT_DIR={mutant_dir or ''}"]
+           "-DRPU_BENCH=OFF", f"-DRPU_MUTANT_DIR={mutant_dir or ''}",
+           f"-DRPU_SIM_ONLY={';'.join(only)}"]
     run(cmd, build / "mutation-configure.log", cmake_env())
 
 
@@ -361,7 +364,7 @@ def main() -> int:
 
     # 1. The manifest (an ordinary configure), 2. the mutated designs, 3. the mutation build.
     if not a.report_only:
-        configure(build, None)
+        configure(build, None, sorted({f.tb for f in plan}))
     manifest = read_manifest(build)
     for f in plan:
         if f.tb not in manifest:
@@ -377,7 +380,7 @@ def main() -> int:
         mutants[tb] = elaborate(tb, manifest, fams, a.seed, work, mutant_dir)
         print(f"{tb}: {len(mutants[tb])} mutants of {', '.join(f.name for f in fams)}", flush=True)
     if not a.report_only:
-        configure(build, mutant_dir)
+        configure(build, mutant_dir, sorted({f.tb for f in plan}))
 
     done: dict[tuple[str, str], str] = {}
     if results_path.exists():

@@ -138,6 +138,8 @@ TEST(CompareReport, CountsMatchKnownDifferences) {
   EXPECT_EQ(m["backends"]["float-ip"]["hit_pixels"], 18);
   EXPECT_EQ(m["backends"]["float"]["hit_pixels"], 19);
   EXPECT_DOUBLE_EQ(m["backends"]["rtl"]["seconds"].get<double>(), 12.0);
+  // The co-simulation against the model on the same frame: 12 s / 1.5 s.
+  EXPECT_DOUBLE_EQ(m["rtl_to_model_time"].get<double>(), 8.0);
 
   // The co-simulation statistics are copied, and the whole object kept.
   EXPECT_EQ(m["cycles"], 1234);
