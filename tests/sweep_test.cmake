@@ -4,6 +4,11 @@
 #   -DMODE=jobs       --emit-jobs, the jobs run with GNU parallel, merge.sh collects them
 #   -DMODE=isolation  invalid and failing configurations are recorded, the others finish
 #   -DMODE=rtl_build  a configuration without a Verilated model in rpu is Verilated on demand
+#   -DMODE=rtl_build_lock  two jobs of that configuration (--config, as in jobs.txt) start at once
+#                     in one output directory: one Verilates under rtl_build/.lock, the other
+#                     waits and then finds the executable (one build); both finish, and the
+#                     merged results.csv equals a serial run's; a lock file that cannot be
+#                     opened is one error naming it
 # Issue 11 (hostile input), each on SCENE (a small scene file) at 8x8 without RTL or Yosys:
 #   -DMODE=csv_header      a scene named my,"odd" scene.json: its results.csv columns are quoted
 #                          (RFC 4180) and every row has as many fields as the header
@@ -159,6 +164,55 @@ elseif(MODE STREQUAL "rtl_build")
   # the RTL's.
   if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,24,20,7,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
     message(FATAL_ERROR "FAILED: no co-simulated sample from the on-demand build: ${rows}")
+  endif()
+elseif(MODE STREQUAL "rtl_build_lock")
+  # A lock file that cannot be opened (here a directory) is one error naming it; nothing is built.
+  file(MAKE_DIRECTORY ${OUT}/bad_lock/rtl_build/.lock)
+  run_rpu(1 sweep ${SWEEP} --out ${OUT}/bad_lock)
+  if(NOT err MATCHES "\nrpu: error: [^\n]*/bad_lock/rtl_build/[.]lock: cannot open the build lock: [^\n]+\n$"
+     OR err MATCHES "Verilating")
+    message(FATAL_ERROR "FAILED: an unusable lock file is not one error naming it: ${err}")
+  endif()
+  run_rpu(0 sweep ${SWEEP} --out ${OUT}/jobs --emit-jobs)
+  file(STRINGS ${OUT}/jobs/jobs.txt jobs)
+  if(NOT jobs MATCHES "--config '?([0-9a-f]+)")
+    message(FATAL_ERROR "FAILED: no configuration in jobs.txt: ${jobs}")
+  endif()
+  set(id ${CMAKE_MATCH_1})
+  # The COMMANDs of one execute_process run at the same time (a pipeline; rpu reads no input).
+  execute_process(COMMAND ${RPU} sweep ${SWEEP} --out ${OUT}/jobs --config ${id} -j 1
+                  COMMAND ${RPU} sweep ${SWEEP} --out ${OUT}/jobs --config ${id} -j 1
+                  RESULTS_VARIABLE rcs OUTPUT_QUIET ERROR_VARIABLE err)
+  message(STATUS "two jobs --config ${id} at once: exit ${rcs}\n${err}")
+  if(NOT rcs STREQUAL "0;0")
+    message(FATAL_ERROR "FAILED: exit ${rcs}, expected 0;0")
+  endif()
+  string(REGEX MATCHALL "Verilating 1 configurations" built "${err}")
+  string(REGEX MATCHALL "waiting for another rpu sweep's co-simulation build" waited "${err}")
+  list(LENGTH built nbuilt)
+  list(LENGTH waited nwaited)
+  if(NOT nbuilt EQUAL 1 OR NOT nwaited EQUAL 1)
+    message(FATAL_ERROR "FAILED: ${nbuilt} builds and ${nwaited} waits, expected one each (the "
+                        "second job must wait for the lock, then reuse the executable)")
+  endif()
+  run_rpu(0 sweep ${SWEEP} --out ${OUT}/jobs --merge)
+  # The serial run reuses the executable (a second Verilated build would only cost minutes).
+  file(MAKE_DIRECTORY ${OUT}/serial)
+  file(CREATE_LINK ${OUT}/jobs/rtl_build ${OUT}/serial/rtl_build SYMBOLIC)
+  run_rpu(0 sweep ${SWEEP} --out ${OUT}/serial)
+  if(err MATCHES "Verilating")
+    message(FATAL_ERROR "FAILED: the serial run built again")
+  endif()
+  set(OUT ${OUT}/jobs)
+  read_csv()
+  if(NOT rows MATCHES "^[0-9a-f]+,ok,8,2,.*,iterative,24,20,7,4,[0-9]+,[0-9]+,[0-9]+,ok,[0-9]+,[0-9]+,")
+    message(FATAL_ERROR "FAILED: no co-simulated sample from the jobs: ${rows}")
+  endif()
+  file(READ ${OUT}/results.csv jobs_csv)
+  file(READ ${OUT}/../serial/results.csv serial_csv)
+  if(NOT jobs_csv STREQUAL serial_csv)
+    message(FATAL_ERROR "FAILED: the jobs' results.csv differs from the serial run's:\n"
+                        "${jobs_csv}\n${serial_csv}")
   endif()
 elseif(MODE STREQUAL "csv_header")
   file(MAKE_DIRECTORY ${OUT}/in)
