@@ -2,7 +2,8 @@
 # one Verilated instance, on three at once (--jobs 3), and as three shards run one by one
 # (--shard I/3) and merged (--merge-shards) gives the same image byte for byte, every share
 # checked against the model; the instances' cycles add up to the work items they took. Then the
-# merge's bad input: a missing share, a repeated one, a shard of another frame, a foreign file.
+# merge's bad input: a missing share, a repeated one, a shard of another frame, a foreign file;
+# and --shard, --jobs and --rtl-exe out of range or misplaced.
 #   cmake -DRPU=rpu -DOUT=dir "-DARGS=scene;flags..." -P rtl_shards.cmake
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
@@ -91,4 +92,8 @@ rpu_refused("too many instances" "--jobs: must be in \\[0, 64\\]"
             render ${ARGS} --backend rtl --jobs 65 -o ${OUT}/bad.png)
 rpu_refused("shards of another backend" "--shard: applies to --backend rtl only"
             render ${ARGS} --backend ref --shard 0/2 -o ${OUT}/bad.shard)
+rpu_refused("a missing harness executable" "--rtl-exe: '[^']*/none' is not an executable file"
+            render ${ARGS} --backend rtl --rtl-exe ${OUT}/none -o ${OUT}/bad.png)
+rpu_refused("two harnesses" "--rtl-exe: cannot be combined with --systemc"
+            render ${ARGS} --backend rtl --systemc --rtl-exe ${OUT}/share0.shard -o ${OUT}/bad.png)
 message(STATUS "PASS: one instance, three instances and three merged shards give one image")

@@ -109,9 +109,15 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
   }
   const FrameSchedule f = schedule_frame(sc, m, o.ref);
   RtlRender out;
+  // The frame runs on the configuration built for speed; --trace-pixel on the traceable one
+  // (a separate build: trace code slows every cycle).
   const RtlConfig* cfg = nullptr;
-  for (const RtlConfig& c : rtl_configs())
-    if (c.fault == (o.fault != 0) && c.params == m.params) cfg = &c;
+  const RtlConfig* trace_cfg = nullptr;
+  for (const RtlConfig& c : rtl_configs()) {
+    if (c.fault != (o.fault != 0) || c.params != m.params) continue;
+    if (!cfg || (cfg->traceable && !c.traceable)) cfg = &c;
+    if (c.traceable && !trace_cfg) trace_cfg = &c;
+  }
   const bool external = o.systemc || !o.external_exe.empty();
   if (external) {
     out.harness = o.systemc ? "systemc" : "c++ (external)";
@@ -307,8 +313,8 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     write_shard(o.shard_out, r);
   }
   if (o.trace_pixel) {
-    if (!cfg || !cfg->traceable)
-      throw Error("--trace-pixel", fmt::format("the configuration {} is not built with FST "
+    if (!trace_cfg)
+      throw Error("--trace-pixel", fmt::format("no configuration for {} is built with FST "
                                                "tracing (traceable ones: see `rpu config`)",
                                                cfg ? cfg->name : describe(m.params)));
     const auto [ti, tj] = *o.trace_pixel;
@@ -320,7 +326,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     const std::string tmp = temporary_path_beside(o.trace_path);
     bool traced = false;
     {
-      auto top = cfg->make(o.x_seed);  // destroyed (the FST closed) at the end of this block
+      auto top = trace_cfg->make(o.x_seed);  // destroyed (the FST closed) at the end of this block
       traced = trace_pixel(*top, f, m, ti, tj, tmp, &out.trace_log);
     }
     struct stat st {};
