@@ -33,8 +33,9 @@ for t in "${targets[@]}"; do
   [[ " ${all_targets[*]} " == *" $t "* ]] || usage
 done
 cd "$(dirname "$0")/.."
-source scripts/asan_build.sh
-configure_asan_build
+export CCACHE_BASEDIR="$PWD"
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DRPU_FUZZ=ON -DRPU_SIM=OFF -DRPU_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
 
 dict_of() { case $1 in fuzz_sweep | fuzz_params) echo fuzz/$1.dict ;; *) echo fuzz/fuzz_scene.dict ;; esac; }

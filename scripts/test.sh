@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up everything (system packages), builds, and runs the default test suite under CTest,
-# then the unit and CLI tests again under ASan/UBSan (scripts/test_sanitize.sh), then the
-# libFuzzer smoke runs (scripts/test_fuzz.sh); both in build-fuzz/ (clang), one build.
+# then the unit and CLI tests again under ASan/UBSan (scripts/test_sanitize.sh, build-asan/), then
+# the libFuzzer smoke runs (scripts/test_fuzz.sh, clang, build-fuzz/).
 # Prints how long each phase took (the CI budget, README "Tests").
 set -euo pipefail
 cd "$(dirname "$0")/.."
