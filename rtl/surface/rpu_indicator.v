@@ -23,7 +23,8 @@
 // Outputs: inside_o; turn_inside_o (spiral, snail: the enabled lanes whose turn holds the point,
 // the trace's turn_inside); angle_o (ψ, or the relief's φ; 0 for the ellipsoid) and rho_o (ρ for
 // the spiral, snail and rocket; else 0), the trace's angle and rho; ovf_o, the sticky overflow
-// bit the twin sets (a CORDIC input saturated: a spiral lane's offset, the rocket's fin term).
+// bit the twin sets (a CORDIC input saturated: the spiral's first-turn offset with turn 0 enabled,
+// its per-turn step with turn 1 enabled, the rocket's fin term).
 //
 // Latency = 1 + LF + Tv + LT + 3 + Tr + LB cycles (ref::indicator_latency; 75 at the defaults),
 //   LF = the front products, Tv / Tr = rpu_cordic's vectoring / rotation latency, LT = ψ·a_turn,
@@ -40,15 +41,19 @@
 //   Tv       rpu_cordic vectoring of (z·sz, x·sx) (relief) or (z, x): φ or ψ, ρ
 //   LT       ψ_u·a_turn, ψ_u·k_turn (ψ unwrapped on the piece's branch: two bits, no adder)
 //   T1       spiral: D0 = ρ − rho0 − r0, E0 = y − y0 (r0, y0 the products ≫ AW); P ≫ 8·(s ≫ 3)
-//   T2       spiral lane m: ρ − ρ_a = D0 − m·a_turn, y − y_a = E0 − m·k_turn (m·X as at most two
-//            shifted terms: 3 = 2 + 1, 5 = 4 + 1, 6 = 4 + 2, 7 = 8 − 1); P ≫ (s mod 8)
+//   T2       the fine shift P ≫ (s mod 8); D0, E0 and the spiral's step (a_turn, k_turn) on
 //   T3       the CORDIC inputs saturated to CorW − 1 bits; the rotation angles 4ψ (spiral),
-//            10φ ± 9y (relief, lanes 0 and 1: rotations of (ke2, 0)), 5ψ (rocket, lane 0: a
-//            rotation of (Y, 0)); Y saturated to CorW + 1 bits (exact for ρ < r, see below)
-//   Tr       Lanes rpu_cordic rotations
+//            10φ ± 9y (relief: rotations of (ke2, 0)), 5ψ (rocket: a rotation of (Y, 0)); Y
+//            saturated to CorW + 1 bits (exact for ρ < r, see below)
+//   Tr       two rpu_cordic rotations: 0 takes the spiral's (D0, E0), the relief's 10φ + 9y and
+//            the rocket; 1 the spiral's step (a_turn, k_turn) and the relief's 10φ − 9y. The
+//            section rotation is linear and its angle 4φ_m ≡ 4ψ is the same in every turn, so
+//            turn m's rotated offset is rotation 0 − m·rotation 1, and no lane has a CORDIC.
 //   back end, in parallel:
-//     spiral   (u·sx, w·sy) ≫ (KF − G); each clamped (|·| ≥ 2^LW: outside, as r2 ≤ 2^(2LW));
-//              squared; r2 − 1 − A² − B² ≥ 0
+//     spiral   the two rotations scaled by (sx, sy) (4 products, exact); lane m: the first's
+//              minus m times the second (m·X as at most two shifted terms: 3 = 2 + 1, 5 = 4 + 1,
+//              6 = 4 + 2, 7 = 8 − 1), ≫ (KF − G); each clamped (|·| ≥ 2^LW: outside, as
+//              r2 ≤ 2^(2LW)); squared; r2 − 1 − A² − B² ≥ 0
 //     snail    (ρ − R_m)² − r_m² = (ρ − G_m)(ρ − G_{m+1}) with G_j = R_j − r_j = j·h_{j−1},
 //              h_j = 2r0 + j·a_turn (the turns' inner and outer edges), exact. Inside ⇔ the
 //              factors P_m, P_{m+1} have opposite signs and |P_m|·|P_{m+1}| > y². The smaller
@@ -70,7 +75,7 @@
 module rpu_indicator #(
   parameter integer SurfW  = 24,  // LW: signed width of surface-local coordinates (16..36)
   parameter integer AngleW = 20,  // AW: binary-angle bits, 2^AW = one turn (12..32, <= LW + 10)
-  parameter integer Lanes  = 8,   // spiral / snail turn lanes (2..8; the relief uses lanes 0, 1)
+  parameter integer Lanes  = 8,   // spiral / snail turn lanes (2..8)
   parameter integer TagW   = 1,   // side-band bits carried with each point (>= 1)
   // Derived (do not override).
   parameter integer KF     = SurfW,          // fraction bits of the Q(1.KF) constants
@@ -113,8 +118,6 @@ module rpu_indicator #(
   localparam integer HW   = TurnW + 4;     // snail h_j = 2r0 + j·a_turn (< 2^(TurnW+3))
   localparam integer PJW  = TurnW + 8;     // snail P_j = ρ − j·h_{j−1} (< 2^(TurnW+7))
   localparam integer HIW  = PJW - 1;       // |P_j|
-  localparam integer SCLW = CorW + G + 2;  // spiral u·sx ≫ (KF − G)
-  localparam integer SclHiW = SCLW - LW;    // its bits from LW up
   localparam integer XsHiW  = XSW - LW;     // x·sx's bits from LW up
   localparam integer KpW  = CorW + 2;      // relief k' = kd + y1 + y2 (|k'| < 2^(CorW+1))
   localparam integer K2W  = 2 * KpW - 2 - KF;  // floor(k'²·2^-KF)
@@ -123,6 +126,7 @@ module rpu_indicator #(
   localparam integer LHW  = 2 * XSW;      // (x·sx)² + (z·sz)² < 2^(2LW+5)
   localparam integer SQW  = 2 * LW + 1;    // a clamped square: ≤ 2^(2LW)
   localparam integer RW   = YW + 2;        // the rocket's radius r
+  localparam integer RotN = 2;             // rotation CORDICs
 
   initial begin
     if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_indicator: SurfW must be in 16..36");
@@ -148,7 +152,7 @@ module rpu_indicator #(
   localparam integer LKD  = `RPU_MUL_LAT(K2W, D2W, 0);     // k2·s²m²
   localparam integer LN   = `RPU_MUL_LAT(LW, HIW, 0);      // snail |P|·|P|
   // The back end, in cycles after the rotations (the registered bit of each type):
-  localparam integer BSp  = LSc + LQ + 2;  // spiral
+  localparam integer BSp  = LSc + LQ + 3;  // spiral
   localparam integer BEl  = LXY + 2;       // ellipsoid
   localparam integer BSn  = LN + 5;        // snail
   localparam integer BRo  = 2;             // rocket
@@ -396,47 +400,29 @@ module rpu_indicator #(
     .clk_i, .valid_i(t1_valid_q), .d_i({t1_at_q, t1_r0_q}), .d_o({t3_at, t3_r0}));
 
   // ===============================================================================================
-  // T2: spiral lane m: ρ − ρ_a = D0 − m·a_turn, y − y_a = E0 − m·k_turn; the fine shift of P.
+  // T2: the fine shift of P; the spiral's first-turn offset (D0, E0) and step (a_turn, k_turn) on.
   // ===============================================================================================
-  wire [SPW-1:0] at_x = {{(SPW - TurnW){t1_at_q[TurnW-1]}}, t1_at_q};
-  wire [SPW-1:0] kt_x = {{(SPW - TurnW){t1_kt_q[TurnW-1]}}, t1_kt_q};
-  wire [Lanes*SPW-1:0] t2_dr, t2_dy;
-  generate
-    for (m = 0; m < Lanes; m = m + 1) begin : g_off
-      localparam integer U1 = m != 0 ? 1 : 0;
-      localparam integer U2 = t2_used(m);
-      localparam integer N2 = t2_neg(m);
-      // D0 − t1 − (±t2): t1 subtracted, t2 subtracted unless it is the "− X" of 7 = 8 − 1.
-      localparam integer SubC = (U2 != 0 && N2 == 0) ? 1 : 0;
-      wire [SPW-1:0] ta1 = U1 != 0 ? at_x << t1_shift(m) : {SPW{1'b0}};
-      wire [SPW-1:0] ta2 = U2 != 0 ? at_x << t2_shift(m) : {SPW{1'b0}};
-      wire [SPW-1:0] tk1 = U1 != 0 ? kt_x << t1_shift(m) : {SPW{1'b0}};
-      wire [SPW-1:0] tk2 = U2 != 0 ? kt_x << t2_shift(m) : {SPW{1'b0}};
-      rpu_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dr (
-        .a_i(t1_d0_q), .b_i(ta1), .c_i(ta2), .s_o(t2_dr[m*SPW +: SPW]));
-      rpu_add3 #(.W(SPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_dy (
-        .a_i(t1_e0_q), .b_i(tk1), .c_i(tk2), .s_o(t2_dy[m*SPW +: SPW]));
-    end
-  endgenerate
-  wire [PW-1:0]        t2_r = $signed(t1_coarse_q) >>> t1_scl_q;  // Y = floor(P·2^-s), exact
-  wire                 t2_valid_q;
-  wire [Lanes*SPW-1:0] t2_dr_q, t2_dy_q;
-  wire [PW-1:0]        t2_r_q;
-  rpu_stage #(.W(2*Lanes*SPW + PW)) u_t2 (
-    .clk_i, .rst_ni, .valid_i(t1_valid_q), .d_i({t2_dr, t2_dy, t2_r}),
-    .valid_o(t2_valid_q), .q_o({t2_dr_q, t2_dy_q, t2_r_q}));
+  wire [PW-1:0]    t2_r = $signed(t1_coarse_q) >>> t1_scl_q;  // Y = floor(P·2^-s), exact
+  wire             t2_valid_q;
+  wire [SPW-1:0]   t2_d0_q, t2_e0_q;
+  wire [TurnW-1:0] t2_at_q, t2_kt_q;
+  wire [PW-1:0]    t2_r_q;
+  rpu_stage #(.W(2*SPW + 2*TurnW + PW)) u_t2 (
+    .clk_i, .rst_ni, .valid_i(t1_valid_q), .d_i({t1_d0_q, t1_e0_q, t1_at_q, t1_kt_q, t2_r}),
+    .valid_o(t2_valid_q), .q_o({t2_d0_q, t2_e0_q, t2_at_q, t2_kt_q, t2_r_q}));
 
   // ===============================================================================================
   // T3: the rotation inputs. Saturation to CorW − 1 bits (cordic_in): |v| ≤ 2^(CorW−2) passes.
   // ===============================================================================================
   localparam integer SatTop = CorW - 2;  // bits SatTop and up must equal the sign
   localparam integer RHiW   = PW - SatTop;   // the product bits from SatTop up
-  localparam integer SpHiW  = SPW - SatTop;  // the spiral offsets' bits from SatTop up
+  localparam integer SpHiW  = SPW - SatTop;  // the spiral offset's bits from SatTop up
+  localparam integer StHiW  = TurnW - SatTop;  // the step's bits from SatTop up
   wire [CorW-2:0] sat_max = {1'b0, {(CorW - 2){1'b1}}};
   wire [CorW-2:0] sat_min = {1'b1, {(CorW - 2){1'b0}}};
-  wire [Lanes*CorW-1:0] t3_rx, t3_ry;
-  wire [Lanes*AW-1:0] t3_ra;
-  wire [Lanes-1:0]    t3_sat;
+  wire [RotN*CorW-1:0] t3_rx, t3_ry;
+  wire [RotN*AW-1:0]   t3_ra;
+  wire [RotN-1:0]      t3_sat;
   // Y (rocket): saturated to YW bits (exact for ρ < r) and to CorW − 1 bits (the CORDIC input).
   wire [PW-YW:0]   r_hi_y = t2_r_q[PW-1:YW-1];
   wire [RHiW-1:0] r_hi_c = t2_r_q[PW-1:SatTop];
@@ -460,48 +446,39 @@ module rpu_indicator #(
   wire [CorW-1:0] ycin_x = {ycin[CorW-2], ycin};
   wire          rel2   = t2_typ[1];
   wire          roc2   = t2_typ[4];
-  generate
-    for (m = 0; m < Lanes; m = m + 1) begin : g_rin
-      wire [SPW-1:0] dr = t2_dr_q[m*SPW +: SPW];
-      wire [SPW-1:0] dy = t2_dy_q[m*SPW +: SPW];
-      wire [SpHiW-1:0] hr = dr[SPW-1:SatTop];
-      wire [SpHiW-1:0] hy = dy[SPW-1:SatTop];
-      wire fr = &hr | ~|hr;
-      wire fy = &hy | ~|hy;
-      wire [CorW-2:0] sr = fr ? dr[CorW-2:0] : dr[SPW-1] ? sat_min : sat_max;
-      wire [CorW-2:0] sy = fy ? dy[CorW-2:0] : dy[SPW-1] ? sat_min : sat_max;
-      wire [CorW-1:0] sr_x = {sr[CorW-2], sr};
-      wire [CorW-1:0] sy_x = {sy[CorW-2], sy};
-      wire [CorW-1:0] in_x, in_y;
-      wire [AW-1:0] in_a;
-      if (m == 0) begin : g_l0  // relief (ke2, 0) by 10φ + 9y; rocket (Y, 0) by 5ψ
-        assign in_x = rel2 ? ke2_x : roc2 ? ycin_x : sr_x;
-        assign in_y = rel2 || roc2 ? {CorW{1'b0}} : sy_x;
-        assign in_a = rel2 ? ang_p : roc2 ? a5 : a4;
-      end else if (m == 1) begin : g_l1  // relief (ke2, 0) by 10φ − 9y
-        assign in_x = rel2 ? ke2_x : sr_x;
-        assign in_y = rel2 ? {CorW{1'b0}} : sy_x;
-        assign in_a = rel2 ? ang_m : a4;
-      end else begin : g_ln
-        assign in_x = sr_x;
-        assign in_y = sy_x;
-        assign in_a = a4;
-      end
-      assign t3_rx[m*CorW +: CorW] = in_x;
-      assign t3_ry[m*CorW +: CorW] = in_y;
-      assign t3_ra[m*AW +: AW] = in_a;
-      assign t3_sat[m]         = t2_en[m] & ~(fr & fy);
-    end
-  endgenerate
-  wire unused_t2 = ^{t2_typ[0], t2_typ[3:2]};
-  wire                t3_valid_q;
-  wire [Lanes*CorW-1:0] t3_rx_q, t3_ry_q;
-  wire [Lanes*AW-1:0] t3_ra_q;
-  wire [Lanes-1:0]    t3_sat_q;
-  wire [YW-1:0]       t3_ysat_q;
-  wire                t3_ovf_roc_q;
+  // The spiral's two rotation operands, saturated: (D0, E0) (SPW bits) and the step
+  // (a_turn, k_turn) (TurnW bits).
+  wire [SpHiW-1:0] h_d0 = t2_d0_q[SPW-1:SatTop];
+  wire [SpHiW-1:0] h_e0 = t2_e0_q[SPW-1:SatTop];
+  wire [StHiW-1:0] h_at = t2_at_q[TurnW-1:SatTop];
+  wire [StHiW-1:0] h_kt = t2_kt_q[TurnW-1:SatTop];
+  wire ok_d0 = &h_d0 | ~|h_d0;
+  wire ok_e0 = &h_e0 | ~|h_e0;
+  wire ok_at = &h_at | ~|h_at;
+  wire ok_kt = &h_kt | ~|h_kt;
+  wire [CorW-2:0] s_d0 = ok_d0 ? t2_d0_q[CorW-2:0] : t2_d0_q[SPW-1] ? sat_min : sat_max;
+  wire [CorW-2:0] s_e0 = ok_e0 ? t2_e0_q[CorW-2:0] : t2_e0_q[SPW-1] ? sat_min : sat_max;
+  wire [CorW-2:0] s_at = ok_at ? t2_at_q[CorW-2:0] : t2_at_q[TurnW-1] ? sat_min : sat_max;
+  wire [CorW-2:0] s_kt = ok_kt ? t2_kt_q[CorW-2:0] : t2_kt_q[TurnW-1] ? sat_min : sat_max;
+  // Rotation 0: relief (ke2, 0) by 10φ + 9y; rocket (Y, 0) by 5ψ; spiral (D0, E0) by 4ψ.
+  assign t3_rx[0 +: CorW] = rel2 ? ke2_x : roc2 ? ycin_x : {s_d0[CorW-2], s_d0};
+  assign t3_ry[0 +: CorW] = rel2 || roc2 ? {CorW{1'b0}} : {s_e0[CorW-2], s_e0};
+  assign t3_ra[0 +: AW]   = rel2 ? ang_p : roc2 ? a5 : a4;
+  // Rotation 1: relief (ke2, 0) by 10φ − 9y; spiral (a_turn, k_turn) by 4ψ.
+  assign t3_rx[CorW +: CorW] = rel2 ? ke2_x : {s_at[CorW-2], s_at};
+  assign t3_ry[CorW +: CorW] = rel2 ? {CorW{1'b0}} : {s_kt[CorW-2], s_kt};
+  assign t3_ra[AW +: AW]     = rel2 ? ang_m : a4;
+  // The offset's saturation counts with turn 0 enabled, the step's with turn 1.
+  assign t3_sat = {t2_en[1] & ~(ok_at & ok_kt), t2_en[0] & ~(ok_d0 & ok_e0)};
+  wire unused_t2 = ^{t2_typ[0], t2_typ[3:2], t2_en[Lanes-1:2]};
+  wire                 t3_valid_q;
+  wire [RotN*CorW-1:0] t3_rx_q, t3_ry_q;
+  wire [RotN*AW-1:0]   t3_ra_q;
+  wire [RotN-1:0]      t3_sat_q;
+  wire [YW-1:0]        t3_ysat_q;
+  wire                 t3_ovf_roc_q;
   // The twin saturates Y on the fins only.
-  rpu_stage #(.W(Lanes*(2*CorW + AW + 1) + YW + 1)) u_t3 (
+  rpu_stage #(.W(RotN*(2*CorW + AW + 1) + YW + 1)) u_t3 (
     .clk_i, .rst_ni, .valid_i(t2_valid_q),
     .d_i({t3_rx, t3_ry, t3_ra, t3_sat, ysat, roc2 & t2_fins & ~fit_c}),
     .valid_o(t3_valid_q), .q_o({t3_rx_q, t3_ry_q, t3_ra_q, t3_sat_q, t3_ysat_q, t3_ovf_roc_q}));
@@ -511,36 +488,25 @@ module rpu_indicator #(
   wire q_ovf = (t3_ctx[CdSpiralO] & |t3_sat_q) | t3_ovf_roc_q;
 
   // ===============================================================================================
-  // Tr: the rotations, one per lane; the context rides in lane 0's tag.
+  // Tr: the two rotations; the context rides in rotation 0's tag.
   // ===============================================================================================
   localparam integer C4W = CDW + R0W + TurnW + YW + 1;
-  wire [Lanes*CorW-1:0] rot_x, rot_y;
-  wire                r_valid;
-  wire [C4W-1:0]      r_ctx;
-  generate
-    for (m = 0; m < Lanes; m = m + 1) begin : g_rot
-      wire          vo;
-      wire [AW-1:0] ao;
-      if (m == 0) begin : g_ctl
-        rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(1), .TagW(C4W)) u_rot (
-          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CorW +: CorW]),
-          .y_i(t3_ry_q[m*CorW +: CorW]), .angle_i(t3_ra_q[m*AW +: AW]),
-          .tag_i({t3_ctx, t3_r0, t3_at, t3_ysat_q, q_ovf}),
-          .valid_o(vo), .x_o(rot_x[m*CorW +: CorW]), .y_o(rot_y[m*CorW +: CorW]), .angle_o(ao),
-          .tag_o(r_ctx));
-        assign r_valid = vo;
-      end else begin : g_lane
-        wire to;
-        rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(1), .TagW(1)) u_rot (
-          .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[m*CorW +: CorW]),
-          .y_i(t3_ry_q[m*CorW +: CorW]), .angle_i(t3_ra_q[m*AW +: AW]), .tag_i(1'b0),
-          .valid_o(vo), .x_o(rot_x[m*CorW +: CorW]), .y_o(rot_y[m*CorW +: CorW]), .angle_o(ao),
-          .tag_o(to));
-        wire unused_lane = ^{vo, to};
-      end
-      wire unused_ao = ^ao;
-    end
-  endgenerate
+  wire [RotN*CorW-1:0] rot_x, rot_y;
+  wire                 r_valid;
+  wire [C4W-1:0]       r_ctx;
+  wire                 r1_valid, r1_tag;
+  wire [AW-1:0]        r0_ao, r1_ao;
+  rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(1), .TagW(C4W)) u_rot0 (
+    .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[0 +: CorW]), .y_i(t3_ry_q[0 +: CorW]),
+    .angle_i(t3_ra_q[0 +: AW]), .tag_i({t3_ctx, t3_r0, t3_at, t3_ysat_q, q_ovf}),
+    .valid_o(r_valid), .x_o(rot_x[0 +: CorW]), .y_o(rot_y[0 +: CorW]), .angle_o(r0_ao),
+    .tag_o(r_ctx));
+  rpu_cordic #(.W(CorW), .AW(AW), .Iters(AW), .Mode(1), .TagW(1)) u_rot1 (
+    .clk_i, .rst_ni, .valid_i(t3_valid_q), .x_i(t3_rx_q[CorW +: CorW]),
+    .y_i(t3_ry_q[CorW +: CorW]), .angle_i(t3_ra_q[AW +: AW]), .tag_i(1'b0),
+    .valid_o(r1_valid), .x_o(rot_x[CorW +: CorW]), .y_o(rot_y[CorW +: CorW]), .angle_o(r1_ao),
+    .tag_o(r1_tag));
+  wire unused_rot = ^{r1_valid, r1_tag, r0_ao, r1_ao};
 
   wire [TagW-1:0]  r_tag;
   wire [4:0]       r_typ;
@@ -569,44 +535,69 @@ module rpu_indicator #(
   assign vr = {vr_q, r_valid};
 
   // ===============================================================================================
-  // Back end: spiral lanes. (u·sx, w·sy) ≫ (KF − G); clamped; squared; r2 − 1 − A² − B² ≥ 0.
+  // Back end: spiral lanes. The rotated offset (u0, w0) and step (ua, wa) scaled by (sx, sy),
+  // exact; lane m: (u0·sx − m·ua·sx, w0·sy − m·wa·sy) ≫ (KF − G) (m·X as at most two shifted terms:
+  // 3 = 2 + 1, 5 = 4 + 1, 6 = 4 + 2, 7 = 8 − 1); clamped; squared; r2 − 1 − A² − B² ≥ 0.
   // ===============================================================================================
-  localparam integer ScPW = CorW + KF + 2;
+  localparam integer ScPW = CorW + KF + 2;  // a scaled rotation output, exact
+  localparam integer LPW  = ScPW + 2;       // a lane's u0·sx − m·ua·sx: |·| < 2^(CorW+KF+3)
+  localparam integer LAW  = LPW - KfDropW;  // the same ≫ (KF − G)
+  localparam integer LaHiW = LAW - LW;      // its bits from LW up
   wire [Lanes-1:0] sp_bit;
   wire [Lanes-1:0] sp_en;
   wire [R2W-1:0]   sp_r2;
-  rpu_delay #(.W(Lanes + R2W), .D(LSc + 1 + LQ)) u_dl_sp (
+  rpu_delay #(.W(Lanes + R2W), .D(LSc + 2 + LQ)) u_dl_sp (
     .clk_i, .valid_i(vr[0]), .d_i({r_en, r_r2}), .d_o({sp_en, sp_r2}));
+  wire [ScPW-1:0] pu0, pw0, pua, pwa;
+  wire            vs, ts;
+  rpu_mul_vec #(.Count(4), .AW(CorW), .BW(KF + 2), .Signed(1), .TagW(1)) u_sc (
+    .clk_i, .rst_ni, .valid_i(vr[0]),
+    .a_i({rot_y[CorW +: CorW], rot_x[CorW +: CorW], rot_y[0 +: CorW], rot_x[0 +: CorW]}),
+    .b_i({1'b0, r_sy, 1'b0, r_sx, 1'b0, r_sy, 1'b0, r_sx}), .tag_i(1'b0),
+    .valid_o(vs), .p_o({pwa, pua, pw0, pu0}), .tag_o(ts));
+  wire [LPW-1:0] pu0_x = {{2{pu0[ScPW-1]}}, pu0};
+  wire [LPW-1:0] pw0_x = {{2{pw0[ScPW-1]}}, pw0};
+  wire [LPW-1:0] pua_x = {{2{pua[ScPW-1]}}, pua};
+  wire [LPW-1:0] pwa_x = {{2{pwa[ScPW-1]}}, pwa};
   generate
     for (m = 0; m < Lanes; m = m + 1) begin : g_sp
-      wire [ScPW-1:0] pu, pw;
-      wire            v1, v2, t1, t2;
-      rpu_mul #(.AW(CorW), .BW(KF + 2), .Signed(1), .TagW(1)) u_su (
-        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_x[m*CorW +: CorW]), .b_i({1'b0, r_sx}),
-        .tag_i(1'b0), .valid_o(v1), .p_o(pu), .tag_o(t1));
-      rpu_mul #(.AW(CorW), .BW(KF + 2), .Signed(1), .TagW(1)) u_sw (
-        .clk_i, .rst_ni, .valid_i(vr[0]), .a_i(rot_y[m*CorW +: CorW]), .b_i({1'b0, r_sy}),
-        .tag_i(1'b0), .valid_o(v2), .p_o(pw), .tag_o(t2));
-      // u·sx ≫ (KF − G), SCLW bits; it squares to ≥ 2^(2LW) ≥ r2 (outside) unless it fits LW + 1
-      // bits signed, so only those are squared.
-      wire [SCLW-1:0] su = pu[KF-G +: SCLW];
-      wire [SCLW-1:0] sw = pw[KF-G +: SCLW];
-      wire [SclHiW-1:0] hu = su[SCLW-1:LW];
-      wire [SclHiW-1:0] hw = sw[SCLW-1:LW];
+      localparam integer U1 = m != 0 ? 1 : 0;
+      localparam integer U2 = t2_used(m);
+      localparam integer N2 = t2_neg(m);
+      // X0 − t1 − (±t2): t1 subtracted, t2 subtracted unless it is the "− X" of 7 = 8 − 1.
+      localparam integer SubC = (U2 != 0 && N2 == 0) ? 1 : 0;
+      wire [LPW-1:0] ua1 = U1 != 0 ? pua_x << t1_shift(m) : {LPW{1'b0}};
+      wire [LPW-1:0] ua2 = U2 != 0 ? pua_x << t2_shift(m) : {LPW{1'b0}};
+      wire [LPW-1:0] wa1 = U1 != 0 ? pwa_x << t1_shift(m) : {LPW{1'b0}};
+      wire [LPW-1:0] wa2 = U2 != 0 ? pwa_x << t2_shift(m) : {LPW{1'b0}};
+      wire [LPW-1:0] lu, lw;
+      rpu_add3 #(.W(LPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_lu (
+        .a_i(pu0_x), .b_i(ua1), .c_i(ua2), .s_o(lu));
+      rpu_add3 #(.W(LPW), .NegB(U1), .NegC(SubC), .Cin(U1 + SubC)) u_lw (
+        .a_i(pw0_x), .b_i(wa1), .c_i(wa2), .s_o(lw));
+      reg [LAW-1:0] lu_q, lw_q;
+      always @(posedge clk_i) begin
+        lu_q <= lu[LPW-1:KfDropW];
+        lw_q <= lw[LPW-1:KfDropW];
+      end
+      // The lane's scaled u squares to ≥ 2^(2LW) ≥ r2 (outside) unless it fits LW + 1 bits
+      // signed, so only those are squared.
+      wire [LaHiW-1:0] hu = lu_q[LAW-1:LW];
+      wire [LaHiW-1:0] hw = lw_q[LAW-1:LW];
       reg  [LW:0] qu_q, qw_q;
       reg         big_q;
       always @(posedge clk_i) begin
-        qu_q  <= (&hu | ~|hu) ? su[LW:0] : {(LW + 1){1'b0}};
-        qw_q  <= (&hw | ~|hw) ? sw[LW:0] : {(LW + 1){1'b0}};
+        qu_q  <= (&hu | ~|hu) ? lu_q[LW:0] : {(LW + 1){1'b0}};
+        qw_q  <= (&hw | ~|hw) ? lw_q[LW:0] : {(LW + 1){1'b0}};
         big_q <= ~((&hu | ~|hu) & (&hw | ~|hw));
       end
       wire [2*LW+1:0] uu, ww;
       wire            v3, v4, big, t4;
       rpu_mul #(.AW(LW + 1), .BW(LW + 1), .Signed(1), .TagW(1)) u_uu (
-        .clk_i, .rst_ni, .valid_i(vr[LSc+1]), .a_i(qu_q), .b_i(qu_q),
+        .clk_i, .rst_ni, .valid_i(vr[LSc+2]), .a_i(qu_q), .b_i(qu_q),
         .tag_i(big_q), .valid_o(v3), .p_o(uu), .tag_o(big));
       rpu_mul #(.AW(LW + 1), .BW(LW + 1), .Signed(1), .TagW(1)) u_ww (
-        .clk_i, .rst_ni, .valid_i(vr[LSc+1]), .a_i(qw_q), .b_i(qw_q),
+        .clk_i, .rst_ni, .valid_i(vr[LSc+2]), .a_i(qw_q), .b_i(qw_q),
         .tag_i(1'b0), .valid_o(v4), .p_o(ww), .tag_o(t4));
       // r2 − 1 − u² − w² ≥ 0 (each square ≤ 2^(2LW): its low SQW bits).
       wire [2*LW+2:0] diff;
@@ -615,10 +606,11 @@ module rpu_indicator #(
       reg bit_q;
       always @(posedge clk_i) bit_q <= sp_en[m] & ~big & ~diff[2*LW+2];
       assign sp_bit[m] = bit_q;
-      wire unused_sp = ^{v1, v2, t1, t2, v3, v4, t4, pu[KfDropW-1:0], pw[KfDropW-1:0], uu[2*LW+1:SQW],
+      wire unused_sp = ^{v3, v4, t4, lu[KfDropW-1:0], lw[KfDropW-1:0], uu[2*LW+1:SQW],
                          ww[2*LW+1:SQW]};
     end
   endgenerate
+  wire unused_sc = ^{vs, ts};
 
   // ===============================================================================================
   // Back end: snail lanes. P_j = ρ − G_j, G_0 = 0, G_j = j·h_{j−1}, h_j = 2r0 + j·a_turn;

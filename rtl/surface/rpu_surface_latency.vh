@@ -27,7 +27,7 @@ function integer rpu_surface_indicator_latency(input integer lw, input integer a
     lkd = `RPU_MUL_LATENCY(k2w, d2w, 0, 24, 17);
     ln  = `RPU_MUL_LATENCY(lw, hiw, 0, 24, 17);
     tkd = rpu_surface_max(1 + lk, lxy + 1);
-    last = rpu_surface_max(rpu_surface_max(lsc + lq + 2, lxy + 2),
+    last = rpu_surface_max(rpu_surface_max(lsc + lq + 3, lxy + 2),
                            rpu_surface_max(rpu_surface_max(ln + 5, 2), tkd + lkd));
     // rpu_cordic at W = cw, Iters = aw: guard bits clog2(aw) + 2, gain fraction bits W + 2.
     cg = $clog2(aw) + 2;

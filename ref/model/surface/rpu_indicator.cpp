@@ -83,18 +83,33 @@ bool indicator_unit(const HwParams& p, const SurfaceDesc& s, const WVec3& l, boo
       const int turns = s.full_turns + (last_turn ? 1 : 0);
       const std::uint64_t a4 = (4 * pol.angle) & mask;  // 4φ_m ≡ 4ψ (mod one turn)
       const i128 r0 = truncate(i128{s.a_turn} * psi, aw);  // a·ψ, llsb (snail)
+      // Spiral: the section rotation is linear and its angle 4φ_m ≡ 4ψ is the same in every
+      // lane, so two rotations serve all lanes: of the first turn's offset (D0, E0) and of the
+      // per-turn step (a_turn, k_turn); lane m is their difference, m steps on, scaled exactly
+      // and floored once. The step's saturation matters only with a second turn enabled.
+      i128 pu0 = 0, pw0 = 0, pua = 0, pwa = 0;
+      if (s.type == SurfaceType::kSpiral && turns > 0) {
+        Overflow o0, o1;
+        const i128 d0 = t.rho - s.rho0 - r0;                         // ρ − ρ_a of turn 0
+        const i128 e0 = l.y - truncate(i128{s.k_turn} * psi, aw);   // y − y_a of turn 0
+        const CordicXY q0 = cordic_rotation(cc, cordic_in(cc, d0, o0), cordic_in(cc, e0, o0), a4);
+        const CordicXY qa = cordic_rotation(cc, cordic_in(cc, s.a_turn, o1),
+                                            cordic_in(cc, s.k_turn, o1), a4);
+        if (o0.flag || (turns > 1 && o1.flag)) ovf.flag = true;
+        pu0 = i128{q0.x} * s.sx;
+        pw0 = i128{q0.y} * s.sy;
+        pua = i128{qa.x} * s.sx;
+        pwa = i128{qa.y} * s.sy;
+      }
       for (int m = 0; m < turns; ++m) {
         t.turn_enable |= 1u << m;
         bool in = false;
         if (s.type == SurfaceType::kSpiral) {
-          // Axis point (R + aφ_m, kφ_m), φ_m = ψ + m turns; the offset rotated by 4φ_m into the
-          // section's axes (u, w); the ellipse (u/c)² + (w/b)² < 1 as (u·m/c)² + (w·m/b)² < m².
-          const i128 phi = psi + (i128{m} << aw);
-          const i128 rho_a = s.rho0 + truncate(i128{s.a_turn} * phi, aw);
-          const i128 y_a = truncate(i128{s.k_turn} * phi, aw);
-          const CordicXY uw = cordic_rotation(cc, cordic_in(cc, t.rho - rho_a, ovf),
-                                              cordic_in(cc, l.y - y_a, ovf), a4);
-          in = sq(scaled(p, uw.x, s.sx)) + sq(scaled(p, uw.y, s.sy)) < s.r2;
+          // The offset of turn m, (ρ − ρ_a, y − y_a) = (D0, E0) − m·(a_turn, k_turn), rotated by
+          // 4φ_m into the section's axes (u, w) and scaled: the ellipse (u/c)² + (w/b)² < 1 as
+          // (u·m/c)² + (w·m/b)² < m².
+          const i128 su = truncate(pu0 - m * pua, KF - G), sw = truncate(pw0 - m * pwa, KF - G);
+          in = sq(su) + sq(sw) < s.r2;
         } else {
           // Section radius r_m = aφ_m = r0 + m·2πa, axis distance R_m = (2m + 1)·r0 + m²·2πa
           // (eq 6 summed), the circle (ρ − R_m)² + y² < r_m², exact.

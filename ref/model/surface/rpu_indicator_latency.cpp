@@ -25,7 +25,7 @@ int indicator_latency(const HwParams& p) {
   const int lk = mul_latency(kpw, kpw, true), lkd = mul_latency(k2w, d2w, false);
   const int ln = mul_latency(lw, hiw, false);
   const int tkd = std::max(1 + lk, lxy + 1);
-  const int last = std::max({lsc + lq + 2,  // spiral
+  const int last = std::max({lsc + lq + 3,  // spiral
                              lxy + 2,       // ellipsoid
                              ln + 5,        // snail
                              2,             // rocket
