@@ -60,6 +60,7 @@ surface/rpu_surface_top.v
 surface/rpu_surface_admit.v
 // header: surface/rpu_surface_desc.vh
 // header: surface/rpu_surface_ip_params.vh
+// header: surface/rpu_surface_state.vh
 // header: surface/rpu_surface_setup_ports.vh
 // header: surface/rpu_surface_latency.vh
 

@@ -1,20 +1,23 @@
-// rpu_surface_ip: the K-step sign search of one surface piece (docs/surfaces.md, "The iterative
-// process on a piece"), twin of rpu::ref::surface_ip (ref/model/surface/rpu_surface_ip.{h,cpp}). The
-// search runs as K + 1 passes of rpu_surface_ip_step: pass 0 evaluates the ends τ = 0 and τ = 1,
-// pass k = 1..K the J − 1 new candidates of step k and the first sign change; a step 1 without
-// one is a miss.
-//   Unrolled = 1: K + 1 pass units in a pipeline (2 + K·(J − 1) indicators), one item per cycle,
-//                 ready_o = 1; the item's data rides the pass units' tags.
-//   Unrolled = 0: one pass unit with max(J − 1, 2) indicators, used K + 1 times by each item
-//                 (the default: 3 indicators instead of 26 at n = 16, n1 = 2). An item enters
-//                 the unit's ring when the slot passing the ring's input is free and goes round
-//                 K + 1 times without waiting; ready_o = that slot is free (no item returning
+// rpu_surface_ip: the sign search of one surface piece (docs/surfaces.md, "The search on a
+// piece"), twin of rpu::ref::surface_ip (ref/model/surface/rpu_surface_ip.{h,cpp}). The search
+// runs as P passes of rpu_surface_ip_step (NC = max(2^N1 − 1, 2) indicators each): pass 0
+// evaluates the ends τ = 0 and τ = 1, then step k (b_k bits: N1First for step 1, 0 meaning N1;
+// N1 for each later step, the last what remains of N) takes ⌈(2^b_k − 1)/NC⌉ passes for its
+// 2^b_k − 1 new candidates; a step 1 without a sign change is a miss. P = rpu_surface_passes
+// (rpu_surface_latency.vh; ref::surface_ip_passes): 49 at the defaults (N 16, N1 2, N1First 7:
+// steps of 7, 2, 2, 2, 2, 1 bits, 142 candidates), K + 1 with N1First = 0.
+//   Unrolled = 1: P pass units in a pipeline (P·NC indicators), one item per cycle, ready_o = 1;
+//                 the item's data rides the pass units' tags.
+//   Unrolled = 0: one pass unit, used P times by each item (the default: 3 indicators). An item
+//                 enters the unit's ring when the slot passing the ring's input is free and goes
+//                 round P times without waiting; ready_o = that slot is free (no item returning
 //                 for another pass this cycle), a compare of the unit's output registers.
-//                 At full load one item per K + 1 cycles; bursts of up to one ring period (L
-//                 items) are taken back to back.
-// Both forms have the same fixed latency (K + 1)·L + 1, L = one pass
-// (rpu_surface_pass_latency, rpu_surface_latency.vh; ref::surface_ip_latency: 721 at the
-// defaults), and keep the input order.
+//                 At full load one item per P cycles; bursts of up to one ring period (L items)
+//                 are taken back to back.
+// Both forms have the same fixed latency P·L + 1, L = one pass (rpu_surface_pass_latency,
+// rpu_surface_latency.vh; ref::surface_ip_latency: 3,921 at the defaults), and keep the input
+// order. The item's search state (rpu_surface_state.vh) carries its schedule: the pass unit reads
+// from it what to evaluate, and sets done after the last pass.
 //
 // Iterative form, context: an item's data (lA', lB' − lA', the branch bits, the descriptor and
 // ctx_i: 571 bits at the defaults with a 1-bit ctx_i, 722 in rpu_surface_top) does not ride the
@@ -34,7 +37,7 @@
 
 module rpu_surface_ip #(
 `include "rpu_surface_ip_params.vh"
-  parameter integer Unrolled = 0,   // 1: K + 1 pass units, 0: one pass unit used K + 1 times
+  parameter integer Unrolled = 0,   // 1: P pass units, 0: one pass unit used P times
   parameter integer CtxW     = 1,   // caller's context passed through (>= 1)
   // Derived (do not override).
   parameter integer DescW    = `RPU_SDW(SurfW), // the descriptor word (rpu_surface_desc.vh)
@@ -61,11 +64,11 @@ module rpu_surface_ip #(
 `include "rpu_surface_latency.vh"
 `include "rpu_surface_desc.vh"
   localparam integer LW  = SurfW;
-  localparam integer K   = N / N1;
-  localparam integer KW  = 8;
-  localparam integer ShW = 8;
-  localparam integer StW = N + 4;                 // {τ, lo, hi, live, ovf}
+`include "rpu_surface_state.vh"
+  localparam integer StW = SsW;
   localparam integer L   = rpu_surface_pass_latency(SurfW, AngleW, N);
+  localparam integer P   = rpu_surface_passes(N, N1, N1First);
+  localparam integer B1  = rpu_surface_first_bits(N, N1, N1First);
   // An item's data, {ctx, desc, la, lab, x_negative, last_turn}; offsets from the bottom.
   localparam integer DBranchO = 0;
   localparam integer DLabO    = DBranchO + 2;
@@ -79,6 +82,7 @@ module rpu_surface_ip #(
     if (N < 1 || N > 40) $fatal(1, "rpu_surface_ip: N must be in 1..40");
     if (N1 < 1 || N1 > 8 || N % N1 != 0)
       $fatal(1, "rpu_surface_ip: N1 must be in 1..8 and divide N");
+    if (N1First < 0 || N1First > 10) $fatal(1, "rpu_surface_ip: N1First must be in 0..10");
     if (Unrolled != 0 && Unrolled != 1) $fatal(1, "rpu_surface_ip: Unrolled must be 0 or 1");
     if (CtxW < 1) $fatal(1, "rpu_surface_ip: CtxW must be >= 1");
     if (DescW != SdW || LabW != SurfW + 1)
@@ -86,8 +90,21 @@ module rpu_surface_ip #(
   end
 
   wire [DW-1:0]  data_in = {ctx_i, desc_i, la_i, lab_i, x_negative_i, last_turn_i};
-  // The state an item starts with: τ = 0, lo = hi = 0 (pass 0 sets them), live = run_i, no ovf.
-  wire [StW-1:0] st_in   = {{(N + 2){1'b0}}, run_i, 1'b0};
+  // The state an item starts with: pass 0 next (lanes 0, 1 at m = 0 and 2^N), step 1's bits and
+  // shift, live = run_i; everything else 0.
+  localparam integer     Shift1I = N - B1;
+  localparam [SsBW-1:0]  Bits1  = B1[SsBW-1:0];
+  localparam [SsShW-1:0] Shift1 = Shift1I[SsShW-1:0];
+  localparam [SsMW-1:0]  MEnd   = {1'b1, {N{1'b0}}};
+  reg [StW-1:0] st_in;
+  always @(*) begin
+    st_in = {StW{1'b0}};
+    st_in[SsLiveO]            = run_i;
+    st_in[SsStartO]           = 1'b1;
+    st_in[SsBitsO +: SsBW]    = Bits1;
+    st_in[SsShiftO +: SsShW]  = Shift1;
+    st_in[SsMO + SsMW +: SsMW] = MEnd;
+  end
 
   `define RPU_SURFACE_PASS_DATA(D) \
     .la_i(D[DLaO +: 3*LW]), .lab_i(D[DLabO +: 3*LabW]), .x_negative_i(D[DBranchO + 1]), \
@@ -101,27 +118,22 @@ module rpu_surface_ip #(
     if (Unrolled != 0) begin : g_unrolled
       assign ready_o = 1'b1;
       // split_var: one Verilator variable per pass's slice (see rpu_sqrt).
-      wire [K+1:0]         v  /* verilator split_var */;
-      wire [(K+2)*StW-1:0] st /* verilator split_var */;
-      wire [(K+2)*DW-1:0]  dt /* verilator split_var */;
+      wire [P:0]         v  /* verilator split_var */;
+      wire [(P+1)*StW-1:0] st /* verilator split_var */;
+      wire [(P+1)*DW-1:0]  dt /* verilator split_var */;
       assign {v[0], st[0 +: StW], dt[0 +: DW]} = {valid_i, st_in, data_in};
       genvar k;
-      for (k = 0; k <= K; k = k + 1) begin : g_pass
+      for (k = 0; k < P; k = k + 1) begin : g_pass
         wire [DW-1:0] d = dt[k*DW +: DW];
-        wire [KW-1:0] k_unused;
-        wire [ShW-1:0] sh_unused;
         rpu_surface_ip_step #(.SurfW(SurfW), .AngleW(AngleW), .Turns(Turns), .N(N), .N1(N1),
-                              .Pass(k), .CtxW(DW)) u_pass (
-          .clk_i, .rst_ni, .valid_i(v[k]), .k_i({KW{1'b0}}), .shift_i({ShW{1'b0}}),
-          .state_i(st[k*StW +: StW]), `RPU_SURFACE_PASS_DATA(d), .ctx_i(d),
-          .valid_o(v[k+1]), .k_o(k_unused), .shift_o(sh_unused), .state_o(st[(k+1)*StW +: StW]),
-          .ctx_o(dt[(k+1)*DW +: DW]));
-        wire unused_k = ^{k_unused, sh_unused};
+                              .N1First(N1First), .CtxW(DW)) u_pass (
+          .clk_i, .rst_ni, .valid_i(v[k]), .state_i(st[k*StW +: StW]), `RPU_SURFACE_PASS_DATA(d),
+          .ctx_i(d), .valid_o(v[k+1]), .state_o(st[(k+1)*StW +: StW]), .ctx_o(dt[(k+1)*DW +: DW]));
       end
-      assign out_valid = v[K+1];
-      assign out_st    = st[(K+1)*StW +: StW];
-      assign out_ctx   = dt[(K+1)*DW + DCtxO +: CtxW];
-      wire unused_out = ^dt[(K+1)*DW +: DCtxO];
+      assign out_valid = v[P];
+      assign out_st    = st[P*StW +: StW];
+      assign out_ctx   = dt[P*DW + DCtxO +: CtxW];
+      wire unused_out = ^dt[P*DW +: DCtxO];
     end else begin : g_iterative
       localparam integer PhW = $clog2(L);
       localparam integer   LastI  = L - 1;
@@ -133,15 +145,12 @@ module rpu_surface_ip #(
         if (!rst_ni) ph_q <= {PhW{1'b0}};
         else         ph_q <= ph_next;
       end
-      // The pass unit's output: an item returning for its next pass, or leaving after pass K.
+      // The pass unit's output: an item returning for its next pass, or leaving after its last.
       wire           ret_valid;
-      wire [KW-1:0]  ret_k;                    // the item's next pass
-      wire [ShW-1:0] ret_shift;                // and its shift
       wire [StW-1:0] ret_st;
       wire           ret_ctx_unused;
-      localparam integer   Done  = K + 1;
-      wire           recirc = ret_valid && (ret_k != Done[KW-1:0]);
-      wire           leave  = ret_valid && (ret_k == Done[KW-1:0]);
+      wire           recirc = ret_valid && !ret_st[SsDoneO];
+      wire           leave  = ret_valid && ret_st[SsDoneO];
       assign ready_o = !recirc;
       wire           accept = valid_i && !recirc;
       // The context RAM (block RAM: one write port, one registered read port). Entry ph holds
@@ -156,16 +165,12 @@ module rpu_surface_ip #(
       // The pass unit's input: the returning item (its next pass, its data from the RAM), else
       // a new item (pass 0, its data from the ports).
       wire           in_valid = recirc || accept;
-      wire [KW-1:0]  in_k     = recirc ? ret_k : {KW{1'b0}};
-      wire [ShW-1:0] in_shift = recirc ? ret_shift : N[ShW-1:0];
       wire [StW-1:0] in_st    = recirc ? ret_st : st_in;
       wire [DW-1:0]  in_d     = recirc ? rd_q : data_in;
       rpu_surface_ip_step #(.SurfW(SurfW), .AngleW(AngleW), .Turns(Turns), .N(N), .N1(N1),
-                            .Pass(-1), .CtxW(1)) u_pass (
-        .clk_i, .rst_ni, .valid_i(in_valid), .k_i(in_k), .shift_i(in_shift), .state_i(in_st),
-        `RPU_SURFACE_PASS_DATA(in_d), .ctx_i(1'b0),
-        .valid_o(ret_valid), .k_o(ret_k), .shift_o(ret_shift), .state_o(ret_st),
-        .ctx_o(ret_ctx_unused));
+                            .N1First(N1First), .CtxW(1)) u_pass (
+        .clk_i, .rst_ni, .valid_i(in_valid), .state_i(in_st), `RPU_SURFACE_PASS_DATA(in_d),
+        .ctx_i(1'b0), .valid_o(ret_valid), .state_o(ret_st), .ctx_o(ret_ctx_unused));
       assign out_valid = leave;
       assign out_st    = ret_st;
       assign out_ctx   = rd_q[DCtxO +: CtxW];
@@ -175,9 +180,10 @@ module rpu_surface_ip #(
   `undef RPU_SURFACE_PASS_DATA
   rpu_stage #(.W(1 + N + 1 + CtxW)) u_out (
     .clk_i, .rst_ni, .valid_i(out_valid),
-    .d_i({out_st[1], out_st[StW-1 -: N], out_st[0], out_ctx}),
+    .d_i({out_st[SsLiveO], out_st[SsTauO +: N], out_st[SsOvfO], out_ctx}),
     .valid_o, .q_o({hit_o, tau_o, ovf_o, ctx_o}));
-  wire unused_st = ^out_st[3:2];  // lo, hi
+  // The rest of the final state: the interval's end bits and the search's bookkeeping.
+  wire unused_st = ^{out_st[StW-1:SsFoundO], out_st[SsLoO], out_st[SsHiO]};
 endmodule
 
 `default_nettype wire

@@ -6,3 +6,4 @@
   parameter integer Turns    = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
   parameter integer N        = 16,  // result bits of τ (1..40)
   parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
+  parameter integer N1First  = 7,   // bits of step 1 (0: N1, the seed's search; 1..10, at most N used)

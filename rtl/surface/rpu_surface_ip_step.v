@@ -1,58 +1,56 @@
-// rpu_surface_ip_step: one pass of the surface sign search (docs/surfaces.md, "The iterative
-// process on a piece"), twin of rpu::ref::surface_ip_start (pass 0) and surface_ip_step (pass k,
-// k = 1..K). τ is an N-bit dyadic index m (τ = m·2^-N); the candidate at m is
+// rpu_surface_ip_step: one pass of the surface sign search (docs/surfaces.md, "The search on a
+// piece"), twin of the steps of rpu::ref::surface_ip (pass 0: surface_ip_start; the passes of step
+// k: surface_ip_step). τ is an N-bit dyadic index m (τ = m·2^-N); the candidate at m is
 //   pr_local(m) = lA' + floor(lAB'·m·2^-N)          (llsb; every product an rpu_mul)
-// and its inside bit comes from an rpu_indicator, one per candidate lane.
-//   pass 0    lanes 0, 1 evaluate m = 0 and m = 2^N: lo = s(0), hi = s(2^N), τ = 0.
-//   pass k    lanes e = 0 .. J−2 evaluate m = τ + (e + 1)·2^(N − N1·k) (the bits are disjoint
-//             from τ's, so an OR); with s_0 = lo, s_J = hi the change bits c_j = s_j ^ s_{j+1}
-//             (j = 0 .. J−1) are registered, then the lowest set one as a one-hot vector selects
-//             η: τ' = τ | η·2^(N − N1·k), lo' = s_η, hi' = s_{η+1} (an AND-OR over the
-//             one-hot). No change bit: the piece misses (live' = 0; only possible at k = 1).
-// Pass = k wired in (the unrolled form), or Pass = −1: k and its shift N − N1·k come with the
-// item (the iterative form, one unit used K + 1 times); the unit hands out the next pass's k + 1
-// and N − N1·(k + 1), each one carry chain in the change-bit stage, so the ring's input (a mux)
-// feeds the multipliers through the shift of j only, no adder.
+// and its inside bit comes from an rpu_indicator, one per lane: NC = max(2^N1 − 1, 2) lanes.
+// The item's search state (rpu_surface_state.vh) says what a pass does, so one unit serves every
+// pass: the iterative form uses one unit for all of an item's passes, the unrolled form chains
+// one unit per pass.
+//   pass 0     lanes 0, 1 evaluate m = 0 and m = 2^N: lo = s(0), hi = s(2^N), τ = 0.
+//   step k     b_k bits (N1First for step 1, 0 meaning N1; N1 for each later step, the last
+//              what remains of N), J = 2^b_k sub-intervals, 2^b_k − 1 new candidates
+//              j = 1 .. J − 1 at m = τ + j·2^shift, shift = N − (b_1 + … + b_k). They take
+//              ⌈(J − 1)/NC⌉ passes, lane e of the pass with j0 candidates before it evaluating
+//              j = j0 + e + 1 (the lanes past J − 1 idle, their overflow masked). The change bits
+//              c_j = s_j ^ s_{j+1} are taken pass by pass, s_0 = lo, s_J = hi, the previous
+//              pass's last candidate (prev) joining the next pass's first; the first change of the
+//              step (the lowest j) is kept (found, its interval's start m and end bits). After the
+//              step's last pass τ' = that start, lo' = s_η, hi' = s_{η+1}; no change: the piece
+//              misses (live' = 0; only possible at step 1). Each pass's lanes' m come with the
+//              state (the next pass's computed here), so the multipliers see register outputs.
+// With N1First = 0 (the seed's schedule) every step takes one pass: K + 1 passes.
 //
-// State {τ, lo, hi, live, ovf} (StW = N + 4 bits, τ on top): live = the piece is searched and has
-// not missed; ovf = the sticky overflow of the twin (some indicator of a live pass saturated).
-// A pass on an item that is not live changes nothing and flags nothing (the twin stops
-// evaluating after a miss, and never runs a piece that does not exist).
-//
-// Lanes: 2 for pass 0, J − 1 for pass k, max(J − 1, 2) at Pass = −1; a lane a pass does not use
-// evaluates a don't-care point and its overflow is masked.
+// State: rpu_surface_state.vh. A pass on an item that is not live changes no result and flags
+// nothing (the twin stops evaluating after a miss, and never runs a piece that does not exist),
+// but its schedule advances, so every item takes the same passes and the latency is fixed.
 //
 // Pipeline (one item per cycle, no stall; context: the lane-0 units' tags):
 //   Lm     lAB'_c · m_e: 3 rpu_mul per lane, (LW + 1) × (N + 2) signed (one DSP48E1 at the
-//          defaults); m_e = τ | j·2^shift in front of the multipliers' input registers
+//          defaults); m_e from the state
 //   1      l = lA' + (p >>> N), exact in LW bits (between lA' and lB'), registered
 //   Lind   rpu_indicator per lane
-//   1      change bits, lane overflow (masked) registered
-//   1      one-hot select, next state registered
+//   1      the lanes used, the change bits, the pass's last candidate, the lanes' overflow
+//          (masked), j0 + NC, m_e + NC·2^shift, the next step's bits and shift, (e + 1)·2^shift'
+//          registered
+//   1      one-hot of the lowest change bit, the AND-OR select, the next state registered
 // Latency = Lm + 1 + Lind + 2 (rpu_surface_pass_latency, rpu_surface_latency.vh;
 // ref::surface_ip_pass_latency; 80 at the defaults).
 // The descriptor, lA' and the branch bits ride the lane-0 x product's tag to the indicators
-// (Lm + 1 cycles); ctx_i rides the whole pass.
+// (Lm + 1 cycles); the state and ctx_i ride the whole pass.
 `default_nettype none
 `include "rpu_widths.vh"
 
 module rpu_surface_ip_step #(
 `include "rpu_surface_ip_params.vh"
-  parameter integer Pass   = -1,  // this unit's pass 0..N/N1, or −1: k_i at run time
   parameter integer CtxW   = 1,   // caller's context passed through (>= 1)
   // Derived (do not override).
-  parameter integer K      = N / N1,
-  parameter integer KW     = 8,                   // pass counter width
-  parameter integer ShW    = 8,                   // the step's shift N − N1·k
-  parameter integer StW    = N + 4,               // state {τ, lo, hi, live, ovf}
+  parameter integer StW    = `RPU_SSTW(N, N1),    // the search state (rpu_surface_state.vh)
   parameter integer LabW   = SurfW + 1,           // lB' − lA'
   parameter integer DescW  = `RPU_SDW(SurfW)       // the packed descriptor (rpu_surface_desc.vh)
 ) (
   input  wire               clk_i,
   input  wire               rst_ni,
   input  wire               valid_i,
-  input  wire [KW-1:0]      k_i,           // this pass (used when Pass == −1)
-  input  wire [ShW-1:0]     shift_i,       // N − N1·k_i (used when Pass == −1 and k_i > 0)
   input  wire [StW-1:0]     state_i,
   input  wire [3*SurfW-1:0] la_i,          // lA', llsb, {z, y, x}
   input  wire [3*LabW-1:0]  lab_i,         // lB' − lA', llsb, {z, y, x}
@@ -61,60 +59,43 @@ module rpu_surface_ip_step #(
   input  wire [DescW-1:0]   desc_i,        // the indicator's descriptor (rpu_surface_desc.vh)
   input  wire [CtxW-1:0]    ctx_i,
   output wire               valid_o,
-  output wire [KW-1:0]      k_o,           // the next pass: k + 1
-  output wire [ShW-1:0]     shift_o,       // its shift N − N1·(k + 1)
   output wire [StW-1:0]     state_o,
   output wire [CtxW-1:0]    ctx_o
 );
 `include "rpu_mul_latency.vh"
 `include "rpu_surface_latency.vh"
 `include "rpu_surface_desc.vh"
+`include "rpu_surface_state.vh"
   localparam integer LW    = SurfW;
-  localparam integer J     = 1 << N1;
-  localparam integer NStep = J - 1;                       // new candidates of a step
-  localparam integer NC    = Pass == 0 ? 2 : Pass > 0 ? NStep : (NStep > 2 ? NStep : 2);
+  localparam integer NC    = SsLanes;                     // lanes: max(2^N1 − 1, 2)
   localparam integer MW_   = N + 2;                       // m as a non-negative signed operand
   localparam integer PW    = LabW + MW_;                  // lAB'_c · m, exact
   localparam integer FW    = PW - N;                      // p >>> N: LW + 3 bits
   localparam integer LInd  = rpu_surface_indicator_latency(SurfW, AngleW);
-  // The lane-0 x product's tag: {k, shift, state, ctx, la, x_negative, last_turn, desc}.
-  localparam integer SbW   = KW + ShW + StW + CtxW + 3 * LW + 2 + DescW;
-  // The lane-0 indicator's tag: {k, shift, state, ctx}, LSB first.
-  localparam integer ItStO = CtxW;
-  localparam integer ItShO = ItStO + StW;
-  localparam integer ItKO  = ItShO + ShW;
-  localparam integer ItW   = ItKO + KW;
+  // The lane-0 x product's tag: {state, ctx, la, x_negative, last_turn, desc}.
+  localparam integer SbW   = StW + CtxW + 3 * LW + 2 + DescW;
+  // The lane-0 indicator's tag: {state, ctx}.
+  localparam integer ItW   = StW + CtxW;
 
   initial begin
     if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_surface_ip_step: SurfW must be in 16..36");
     if (N < 1 || N > 40) $fatal(1, "rpu_surface_ip_step: N must be in 1..40");
     if (N1 < 1 || N1 > 8) $fatal(1, "rpu_surface_ip_step: N1 must be in 1..8");
     if (N % N1 != 0) $fatal(1, "rpu_surface_ip_step: N must be a multiple of N1");
-    if (Pass < -1 || Pass > K) $fatal(1, "rpu_surface_ip_step: Pass must be in -1..N/N1");
+    if (N1First < 0 || N1First > 10) $fatal(1, "rpu_surface_ip_step: N1First must be in 0..10");
     if (CtxW < 1) $fatal(1, "rpu_surface_ip_step: CtxW must be >= 1");
-    if (K != N / N1 || KW != 8 || ShW != 8 || StW != N + 4 || LabW != SurfW + 1 ||
-        DescW != SdW)
+    if (StW != SsW || LabW != SurfW + 1 || DescW != SdW)
       $fatal(1, "rpu_surface_ip_step: derived parameters must not be overridden");
   end
 
   genvar e, c;
 
-  // ---- the candidates' m and the products lAB'_c · m_e ----
-  wire [KW-1:0]  k_in    = Pass < 0 ? k_i : Pass[KW-1:0];
-  wire           start   = k_in == {KW{1'b0}};
-  wire [N-1:0]   tau_in  = state_i[StW-1 -: N];
-  localparam integer ShPass = N - N1 * (Pass < 0 ? 0 : Pass);
-  wire [ShW-1:0] shift   = Pass < 0 ? shift_i : ShPass[ShW-1:0];      // N − N1·k (k >= 1)
-  wire [SbW-1:0] sb_in   = {k_in, shift, state_i, ctx_i, la_i, x_negative_i, last_turn_i, desc_i};
-
+  // ---- the candidates' m (from the state) and the products lAB'_c · m_e ----
+  wire [SbW-1:0] sb_in = {state_i, ctx_i, la_i, x_negative_i, last_turn_i, desc_i};
   wire [NC*3*MW_-1:0] m_op;  // lane e: {3{m_e}}, each as a non-negative signed operand
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_lane_m
-      localparam [N:0] JE = e + 1;                      // the lane's j in a step
-      localparam [N:0] M0 = e == 1 ? {1'b1, {N{1'b0}}}   // pass 0: m = 0 (lane 0), 2^N (lane 1)
-                                   : {(N+1){1'b0}};
-      wire [N:0] m_step = {1'b0, tau_in} | (JE << shift);
-      wire [N:0] m      = start ? M0 : m_step;
+      wire [SsMW-1:0] m = state_i[SsMO + e*SsMW +: SsMW];
       assign m_op[e*3*MW_ +: 3*MW_] = {3{1'b0, m}};
     end
   endgenerate
@@ -194,104 +175,174 @@ module rpu_surface_ip_step #(
   end
 `endif
 
-  // ---- registered change bits (pass k) and the lanes' overflow, masked to the lanes used ----
-  wire [KW-1:0]   a_k     = ind_it[ItKO +: KW];
-  wire [ShW-1:0]  a_shift = ind_it[ItShO +: ShW];
-  wire [StW-1:0]  a_st    = ind_it[ItStO +: StW];
-  wire            a_start = a_k == {KW{1'b0}};
-  wire [J:0]      s_in;                    // s_0 = lo, s_1 .. s_{J−1} the lanes, s_J = hi
-  assign s_in[0] = a_st[3];
-  assign s_in[J] = a_st[2];
-  generate
-    for (e = 1; e < J; e = e + 1) begin : g_s
-      if (e - 1 < NC) begin : g_lane
-        assign s_in[e] = ind_inside[e-1];
-      end else begin : g_none          // Pass = 0 with J − 1 > 2: no step here
-        assign s_in[e] = 1'b0;
-      end
-    end
-  endgenerate
-  wire [NC-1:0] use_step, use_start;      // the lanes a step / pass 0 uses
-  wire [1:0]    ends;                     // pass 0: {s(0), s(2^N)}
+  // ---- stage A: the lanes used, the change bits, the pass's last candidate; the next pass's
+  // ---- schedule and candidates, precomputed ----
+  wire [StW-1:0]   a_st    = ind_it[CtxW +: StW];
+  wire             a_start = a_st[SsStartO];
+  wire [SsBW-1:0]  a_bits  = a_st[SsBitsO +: SsBW];
+  wire [SsShW-1:0] a_shift = a_st[SsShiftO +: SsShW];
+  wire [SsJW-1:0]  a_j0    = a_st[SsJ0O +: SsJW];
+  // The step's candidates not yet evaluated before this pass: J − 1 − j0 (≥ 1).
+  wire [SsJW-1:0]  a_jm1   = ({{(SsJW - 1){1'b0}}, 1'b1} << a_bits) - 1'b1;
+  wire [SsJW-1:0]  a_cnt   = a_jm1 - a_j0;
+  localparam [SsJW-1:0] NcJ = NC[SsJW-1:0];
+  wire             a_last  = ~a_start & (a_cnt <= NcJ);  // the step's last pass
+  wire [NC-1:0]    used, lastlane;
+  wire [NC:0]      x;                                    // x_0 = prev, x_{e+1} = lane e
+  assign x[0] = a_st[SsPrevO];
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_use
-      assign use_step[e]  = e < NStep;
-      assign use_start[e] = e < 2;
-    end
-    if (NC >= 2) begin : g_ends
-      assign ends = {ind_inside[0], ind_inside[1]};
-    end else begin : g_no_ends            // Pass = k > 0 with N1 = 1: never pass 0
-      assign ends = 2'b00;
+      localparam integer    E1I = e + 1;
+      localparam [SsJW-1:0] E1 = E1I[SsJW-1:0];
+      assign x[e+1]      = ind_inside[e];
+      assign used[e]     = a_start ? (e < 2) : (a_cnt >= E1);
+      assign lastlane[e] = a_last ? (a_cnt == E1) : (e == NC - 1);
     end
   endgenerate
-  wire          lanes_ovf = |(ind_ovf & (a_start ? use_start : use_step));
-  // The next pass: k + 1 and N − N1·(k + 1), N1 below this pass's shift (N at k = 0).
-  wire [KW-1:0]  a_knext  = a_k + 1'b1;
-  wire [ShW-1:0] a_shnext = (a_start ? N[ShW-1:0] : a_shift) - N1[ShW-1:0];
-
-  wire            b_valid_q;
-  wire [KW-1:0]   b_k_q, b_knext_q;
-  wire [ShW-1:0]  b_shift_q, b_shnext_q;
-  wire [StW-1:0]  b_st_q;
-  wire [CtxW-1:0] b_ctx_q;
-  wire [J:0]      b_s_q;
-  wire [J-1:0]    b_chg_q;
-  wire [1:0]      b_ends_q;                // pass 0: {s(0), s(2^N)}
-  wire            b_ovf_q;
-  rpu_stage #(.W(2*KW + 2*ShW + StW + CtxW + 2*J + 4)) u_b (
-    .clk_i, .rst_ni, .valid_i(ind_valid),
-    .d_i({a_k, a_knext, a_shift, a_shnext, a_st, ind_it[CtxW-1:0], s_in, s_in[J-1:0] ^ s_in[J:1],
-          ends, lanes_ovf}),
-    .valid_o(b_valid_q),
-    .q_o({b_k_q, b_knext_q, b_shift_q, b_shnext_q, b_st_q, b_ctx_q, b_s_q, b_chg_q, b_ends_q,
-          b_ovf_q}));
-
-  // ---- the one-hot of the lowest change bit, the AND-OR select, the next state ----
-  wire [N-1:0]   b_tau   = b_st_q[StW-1 -: N];
-  wire           b_live  = b_st_q[1];
-  wire           b_sovf  = b_st_q[0];
-  wire           b_start = b_k_q == {KW{1'b0}};
-  wire [ShW-1:0] b_shift = b_shift_q;
-  reg [J-1:0]    onehot;
-  reg            lower;
+  wire         s_last = |(lastlane & ind_inside);
+  reg  [N-1:0] m_last;
   integer q;
   always @(*) begin
+    m_last = {N{1'b0}};
+    for (q = 0; q < NC; q = q + 1)
+      m_last = m_last | ({N{lastlane[q]}} & a_st[SsMO + q*SsMW +: N]);
+  end
+  // Change bits: c_e between x_e and x_{e+1} (lanes used), c_NC between the step's last
+  // candidate and hi (the step's last pass only).
+  wire [NC:0] chg;
+  generate
+    for (e = 0; e < NC; e = e + 1) begin : g_chg
+      assign chg[e] = ~a_start & used[e] & (x[e] ^ x[e+1]);
+    end
+  endgenerate
+  assign chg[NC] = a_last & (s_last ^ a_st[SsHiO]);
+  wire lanes_ovf = |(ind_ovf & used);
+  // The next step's bits min(N1, shift) and shift; at pass 0 the next pass is step 1, whose bits
+  // and shift the state already holds.
+  localparam [SsShW-1:0] N1S = N1[SsShW-1:0];
+  wire [SsShW-1:0] nb8     = a_shift < N1S ? a_shift : N1S;
+  wire [SsShW-1:0] n_shift = a_start ? a_shift : a_shift - nb8;
+  wire [SsBW-1:0]  n_bits  = a_start ? a_bits : nb8[SsBW-1:0];
+  wire             n_done  = a_last & (a_shift == {SsShW{1'b0}});
+  wire [SsJW-1:0]  j0_next = a_j0 + NcJ;
+  localparam [SsMW-1:0] NcM = NC[SsMW-1:0];
+  wire [NC*SsMW-1:0] pre, madd;  // (e + 1)·2^shift' (a new step), m_e + NC·2^shift (this step)
+  generate
+    for (e = 0; e < NC; e = e + 1) begin : g_next_m
+      localparam integer    E1MI = e + 1;
+      localparam [SsMW-1:0] E1M = E1MI[SsMW-1:0];
+      assign pre[e*SsMW +: SsMW]  = E1M << n_shift;
+      assign madd[e*SsMW +: SsMW] = a_st[SsMO + e*SsMW +: SsMW] + (NcM << a_shift);
+    end
+  endgenerate
+  wire unused_a = ^{nb8[SsShW-1:SsBW]};
+
+  wire              b_valid_q;
+  wire [StW-1:0]    b_st_q;
+  wire [CtxW-1:0]   b_ctx_q;
+  wire [NC:0]       b_x_q, b_chg_q;
+  wire              b_slast_q, b_last_q, b_ovf_q, b_done_q;
+  wire [N-1:0]      b_mlast_q;
+  wire [SsShW-1:0]  b_nshift_q;
+  wire [SsBW-1:0]   b_nbits_q;
+  wire [SsJW-1:0]   b_j0n_q;
+  wire [NC*SsMW-1:0] b_pre_q, b_madd_q;
+  rpu_stage #(.W(StW + CtxW + 2*(NC + 1) + 4 + N + SsShW + SsBW + SsJW + 2*NC*SsMW)) u_b (
+    .clk_i, .rst_ni, .valid_i(ind_valid),
+    .d_i({a_st, ind_it[CtxW-1:0], x, chg, s_last, a_last, lanes_ovf, n_done, m_last, n_shift,
+          n_bits, j0_next, pre, madd}),
+    .valid_o(b_valid_q),
+    .q_o({b_st_q, b_ctx_q, b_x_q, b_chg_q, b_slast_q, b_last_q, b_ovf_q, b_done_q, b_mlast_q,
+          b_nshift_q, b_nbits_q, b_j0n_q, b_pre_q, b_madd_q}));
+
+  // ---- stage B: the one-hot of the lowest change bit, the AND-OR select, the next state ----
+  wire         b_start = b_st_q[SsStartO];
+  wire         b_live  = b_st_q[SsLiveO];
+  wire         b_found = b_st_q[SsFoundO];
+  reg  [NC:0]  onehot;
+  reg          lower;
+  always @(*) begin
     lower = 1'b0;
-    for (q = 0; q < J; q = q + 1) begin
+    for (q = 0; q <= NC; q = q + 1) begin
       onehot[q] = b_chg_q[q] & ~lower;
       lower     = lower | b_chg_q[q];
     end
   end
-  wire [J*N-1:0] tau_terms;               // η·2^shift for η = q, where selected
+  // Change bit q's interval: its lower candidate's m and the bits of its ends.
+  wire [NC:0] xl = {b_slast_q, b_x_q[NC-1:0]};
+  wire [NC:0] xu = {b_st_q[SsHiO], b_x_q[NC:1]};
+  reg  [N-1:0] ml_sel;
+  always @(*) begin
+    ml_sel = {N{onehot[0]}} & b_st_q[SsMprevO +: N];
+    for (q = 1; q < NC; q = q + 1)
+      ml_sel = ml_sel | ({N{onehot[q]}} & b_st_q[SsMO + (q-1)*SsMW +: N]);
+    ml_sel = ml_sel | ({N{onehot[NC]}} & b_mlast_q);
+  end
+  wire any     = |b_chg_q;
+  wire take    = b_live & ~b_found & any;            // this pass has the step's first change
+  wire found1  = b_found | (b_live & any);
+  wire [N-1:0] stau = take ? ml_sel : b_st_q[SsStauO +: N];
+  wire         slo  = take ? |(onehot & xl) : b_st_q[SsSloO];
+  wire         shi  = take ? |(onehot & xu) : b_st_q[SsShiO];
+  // The step's end: the selected interval, or a miss.
+  wire         hit_end = b_live & found1;
+  wire [N-1:0] tau_e   = hit_end ? stau : b_st_q[SsTauO +: N];
+  wire         lo_e    = hit_end ? slo : b_st_q[SsLoO];
+  wire         hi_e    = hit_end ? shi : b_st_q[SsHiO];
+  wire         ovf1    = b_st_q[SsOvfO] | (b_live & b_ovf_q);
+  // The next pass's lanes: a new step (after pass 0 or a step's last pass) starts at its τ.
+  wire [N-1:0] tau_new = b_start ? {N{1'b0}} : tau_e;
+  wire [NC*SsMW-1:0] m_new;
   generate
-    for (e = 0; e < J; e = e + 1) begin : g_eta
-      localparam [N-1:0] Eta = e;
-      assign tau_terms[e*N +: N] = onehot[e] ? Eta << b_shift : {N{1'b0}};
+    for (e = 0; e < NC; e = e + 1) begin : g_m_new
+      assign m_new[e*SsMW +: SsMW] = {1'b0, tau_new} | b_pre_q[e*SsMW +: SsMW];
     end
   endgenerate
-  reg [N-1:0] tau_sel;
+  reg [StW-1:0] st_next;
   always @(*) begin
-    tau_sel = {N{1'b0}};
-    for (q = 0; q < J; q = q + 1) tau_sel = tau_sel | tau_terms[q*N +: N];
+    st_next = b_st_q;
+    if (b_start) begin                                   // pass 0: the ends
+      st_next[SsTauO +: N]     = {N{1'b0}};
+      st_next[SsLoO]           = b_x_q[1];
+      st_next[SsHiO]           = b_x_q[2];
+      st_next[SsOvfO]          = ovf1;
+      st_next[SsFoundO]        = 1'b0;
+      st_next[SsPrevO]         = b_x_q[1];
+      st_next[SsMprevO +: N]   = {N{1'b0}};
+      st_next[SsStartO]        = 1'b0;
+      st_next[SsJ0O +: SsJW]   = {SsJW{1'b0}};
+      st_next[SsMO +: NC*SsMW] = m_new;
+    end else if (b_last_q) begin                         // the step's last pass
+      st_next[SsTauO +: N]     = tau_e;
+      st_next[SsLoO]           = lo_e;
+      st_next[SsHiO]           = hi_e;
+      st_next[SsLiveO]         = b_live & found1;        // no change at step 1: a miss
+      st_next[SsOvfO]          = ovf1;
+      st_next[SsFoundO]        = 1'b0;
+      st_next[SsPrevO]         = lo_e;
+      st_next[SsMprevO +: N]   = tau_e;
+      st_next[SsDoneO]         = b_done_q;
+      st_next[SsBitsO +: SsBW] = b_nbits_q;
+      st_next[SsShiftO +: SsShW] = b_nshift_q;
+      st_next[SsJ0O +: SsJW]   = {SsJW{1'b0}};
+      st_next[SsMO +: NC*SsMW] = m_new;
+    end else begin                                       // more passes of this step
+      st_next[SsOvfO]          = ovf1;
+      st_next[SsFoundO]        = found1;
+      st_next[SsStauO +: N]    = stau;
+      st_next[SsSloO]          = slo;
+      st_next[SsShiO]          = shi;
+      st_next[SsPrevO]         = b_slast_q;
+      st_next[SsMprevO +: N]   = b_mlast_q;
+      st_next[SsJ0O +: SsJW]   = b_j0n_q;
+      st_next[SsMO +: NC*SsMW] = b_madd_q;
+    end
   end
-  wire lo_sel = |(onehot & b_s_q[J-1:0]);
-  wire hi_sel = |(onehot & b_s_q[J:1]);
-  wire           found = |b_chg_q;
-  reg [StW-1:0]  st_next;
-  always @(*) begin
-    if (b_start)
-      st_next = {{N{1'b0}}, b_ends_q, b_live, b_sovf | (b_live & b_ovf_q)};
-    else if (!b_live)
-      st_next = b_st_q;
-    else if (!found)                                    // step 1 without a change: a miss
-      st_next = {b_tau, b_st_q[3:2], 1'b0, b_sovf | b_ovf_q};
-    else
-      st_next = {b_tau | tau_sel, lo_sel, hi_sel, 1'b1, b_sovf | b_ovf_q};
-  end
+  wire unused_b = b_x_q[NC];
 
-  rpu_stage #(.W(KW + ShW + StW + CtxW)) u_out (
-    .clk_i, .rst_ni, .valid_i(b_valid_q), .d_i({b_knext_q, b_shnext_q, st_next, b_ctx_q}),
-    .valid_o, .q_o({k_o, shift_o, state_o, ctx_o}));
+  rpu_stage #(.W(StW + CtxW)) u_out (
+    .clk_i, .rst_ni, .valid_i(b_valid_q), .d_i({st_next, b_ctx_q}),
+    .valid_o, .q_o({state_o, ctx_o}));
 endmodule
 
 `default_nettype wire

@@ -43,3 +43,32 @@ function integer rpu_surface_pass_latency(input integer lw, input integer aw, in
   rpu_surface_pass_latency =
       `RPU_MUL_LATENCY(lw + 1, n + 2, 1, 24, 17) + 1 + rpu_surface_indicator_latency(lw, aw) + 2;
 endfunction
+
+// The search's schedule (ref::HwParams::surface_step_bits, docs/surfaces.md "The search on a
+// piece"): step 1 takes n1f bits (0: n1, the seed's search; at most n), each later step n1 and the
+// last what remains of n.
+function integer rpu_surface_first_bits(input integer n, input integer n1, input integer n1f);
+  rpu_surface_first_bits = n1f == 0 ? n1 : n1f < n ? n1f : n;
+endfunction
+
+// Indicators of one pass unit (ref::surface_ip_lanes): max(2^n1 − 1, 2).
+function integer rpu_surface_lanes(input integer n1);
+  rpu_surface_lanes = rpu_surface_max((1 << n1) - 1, 2);
+endfunction
+
+// Passes of one item (ref::surface_ip_passes): 1 for the ends, then ⌈(2^b − 1) / lanes⌉ per step.
+function integer rpu_surface_passes(input integer n, input integer n1, input integer n1f);
+  integer lanes, left, b, passes;
+  begin
+    lanes = rpu_surface_lanes(n1);
+    b = rpu_surface_first_bits(n, n1, n1f);
+    left = n - b;
+    passes = 1 + ((1 << b) - 1 + lanes - 1) / lanes;
+    while (left > 0) begin
+      b = left < n1 ? left : n1;
+      left = left - b;
+      passes = passes + ((1 << b) - 1 + lanes - 1) / lanes;
+    end
+    rpu_surface_passes = passes;
+  end
+endfunction

@@ -24,8 +24,8 @@
 // default): the IP's ring takes an item only into a free slot, so the items are admitted here,
 // a setup latency ahead, by rpu_surface_admit (the ring's occupancy mirrored: ready_o is a
 // compare of a register); every admitted item finds its slot, so the latency stays fixed. At full
-// load one item per K + 1 cycles (9 at the defaults), bursts of up to one ring period back to
-// back.
+// load one item per P cycles, P the search's passes (rpu_surface_passes: 49 at the defaults),
+// bursts of up to one ring period back to back.
 // The indicator fields wait for the setup in a FIFO (rpu_fifo, block RAM, first-word
 // fall-through: the head is at its output when the setup delivers that item); the setup's
 // results the tail needs ride the IP as its context (in the iterative form, the IP's context
@@ -36,8 +36,8 @@
 //   1     X = A' + (p >>> N), X − h = (A' − h) + (p >>> N), both exact
 //   Ld    (X − h)_c · W_c, (CoordW + 1) × EdgeW signed (in this order: 2 DSP tiles, not 4)
 //   1     depth = the sum of the three (one carry-save step and one adder); outputs registered
-// Latency = setup + IP + Lx + 1 + Ld + 1 (ref::surface_top_latency; 105 + 721 + 2 + 1 + 3 + 1 =
-// 833 at the defaults).
+// Latency = setup + IP + Lx + 1 + Ld + 1 (ref::surface_top_latency; 105 + 3,921 + 2 + 1 + 3 + 1 =
+// 4,033 at the defaults).
 `default_nettype none
 `include "rpu_widths.vh"
 
@@ -49,7 +49,7 @@ module rpu_surface_top #(
   parameter integer SqrtW    = 0,   // widest radicand of the sphere unit's root; 0 = exact
   parameter integer EdgeFrac = 16,  // FE: fraction bits of the camera axis W (8..40)
 `include "rpu_surface_ip_params.vh"
-  parameter integer Unrolled = 0,   // 1: K + 1 pass units, 0: one pass unit used K + 1 times
+  parameter integer Unrolled = 0,   // 1: P pass units, 0: one pass unit used P times
   parameter integer TagW     = 1,   // side-band bits carried with each item (>= 1)
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
@@ -90,7 +90,7 @@ module rpu_surface_top #(
 `include "rpu_surface_desc.vh"
   localparam integer CW   = CoordW;
   localparam integer LW   = SurfW;
-  localparam integer K    = N / N1;
+  localparam integer P    = rpu_surface_passes(N, N1, N1First);  // passes of the search
   localparam integer LabW = SurfW + 1;
   localparam integer L    = rpu_surface_pass_latency(SurfW, AngleW, N);
   // The IP's context (the setup's results the tail needs), offsets from the bottom:
@@ -126,7 +126,7 @@ module rpu_surface_top #(
     if (Unrolled != 0) begin : g_admit_all
       assign ready_o = 1'b1;
     end else begin : g_admit_ring
-      rpu_surface_admit #(.Period(L), .Returns(K)) u_admit (
+      rpu_surface_admit #(.Period(L), .Returns(P - 1)) u_admit (
         .clk_i, .rst_ni, .valid_i, .ready_o);
     end
   endgenerate
@@ -165,7 +165,7 @@ module rpu_surface_top #(
   wire [N-1:0]    ip_tau;
   wire [CtxW-1:0] ip_ctx;
   rpu_surface_ip #(.SurfW(SurfW), .AngleW(AngleW), .Turns(Turns), .N(N), .N1(N1),
-                   .Unrolled(Unrolled), .CtxW(CtxW)) u_ip (
+                   .N1First(N1First), .Unrolled(Unrolled), .CtxW(CtxW)) u_ip (
     .clk_i, .rst_ni, .valid_i(su_valid), .ready_o(ip_ready), .run_i(su_piece_valid),
     .la_i(su_la), .lab_i(su_lab), .x_negative_i(su_xneg), .last_turn_i(su_last),
     .desc_i(df_desc),

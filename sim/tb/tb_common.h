@@ -59,6 +59,9 @@
 #ifndef ANGLE_W
 #define ANGLE_W 20
 #endif
+#ifndef SURF_N1_FIRST
+#define SURF_N1_FIRST 7  // rpu_surface_ip's N1First (0: the seed's schedule)
+#endif
 #ifndef TAG_W
 #define TAG_W 1
 #endif
@@ -83,9 +86,7 @@ inline ref::HwParams tb_params() {
   p.unrolled = UNROLLED != 0;
   p.surf_w = SURF_W;
   p.angle_w = ANGLE_W;
-  // rtl/surface/rpu_surface_ip.v searches with the seed's schedule (n1 bits at every step;
-  // docs/surfaces.md, "RTL"), so its twins run with that schedule here.
-  p.surf_n1_first = 0;
+  p.surf_n1_first = SURF_N1_FIRST;
   p.validate();
   return p;
 }

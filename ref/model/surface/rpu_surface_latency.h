@@ -4,8 +4,8 @@
 // as the indicator's and the setup's latencies are (model/surface/rpu_indicator_latency.h,
 // model/surface/rpu_surface_setup_latency.h). sim/tb/surface/tb_rpu_surface_ip.cpp and
 // sim/tb/surface/tb_rpu_surface_top.cpp check every item against them.
-// The RTL implements the seed's schedule of the sign search (surf_n1_first = seed: K steps of n1
-// bits), and these counts are that schedule's.
+// The RTL runs the model's schedule of the sign search (surf_n1_first, then n1 bits per step) in
+// passes of a pass unit with surface_ip_lanes() indicators.
 #pragma once
 
 #include "model/hw_params.h"
@@ -17,17 +17,26 @@ namespace rpu::ref {
 // 80 at the defaults. The iterative form's ring period.
 int surface_ip_pass_latency(const HwParams& p);
 
-// rpu_surface_ip: K + 1 passes (pass 0 evaluates the ends τ = 0 and τ = 1, passes 1..K the
-// steps) and the output register, in both forms: (K + 1)·pass + 1 (721 at the defaults).
+// Indicators of one pass unit: max(2^n1 − 1, 2), so that every step after the first takes one
+// pass (3 at the defaults).
+int surface_ip_lanes(const HwParams& p);
+
+// Passes of one item: pass 0 evaluates the ends τ = 0 and τ = 1, then step k takes
+// ⌈(2^b_k − 1) / lanes⌉ passes for its 2^b_k − 1 new candidates (b_k = surface_step_bits(k)).
+// 49 at the defaults (1 + 43 + 1 + 1 + 1 + 1 + 1), K + 1 with the seed's schedule.
+int surface_ip_passes(const HwParams& p);
+
+// rpu_surface_ip: the passes and the output register, in both forms: passes·pass + 1 (3,921 at
+// the defaults).
 int surface_ip_latency(const HwParams& p);
 
-// Cycles between accepted items at full load: 1 unrolled; K + 1 iterative (one pass unit used
-// K + 1 times by each item).
+// Cycles between accepted items at full load: 1 unrolled; the passes iterative (one pass unit
+// used that many times by each item).
 int surface_ip_interval(const HwParams& p);
 
 // rpu_surface_top: rpu_surface_setup, rpu_surface_ip, then the products AB'·τ (rpu_mul), X and
 // X − h (one stage), the products (X − h)·W (rpu_mul) and the depth sum (one stage, registered
-// output). 833 at the defaults.
+// output). 4,033 at the defaults.
 int surface_top_latency(const HwParams& p);
 
 }  // namespace rpu::ref

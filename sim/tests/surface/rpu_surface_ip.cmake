@@ -1,16 +1,24 @@
 # rpu_surface_ip alone against surface_ip: pieces of the scenes/surf_*.json surfaces from the
 # setup twin (camera pixels, border pixels, grazing and range-plane rays, eyes inside the sphere),
 # edited indicator fields (overflowing lanes), empty pieces with junk (run_i = 0) and random
-# pieces. Opt-in (-DRPU_SIM_EXTRA=ON: the Verilated C++ of three indicators takes minutes to
-# compile on two cores, too long for the default suite's budget): the unrolled form, narrow (LW 18, AW 14, 6 turn lanes, n = 6, n1 = 3:
-# three pass units, steps of 7 candidates); the iterative form at the defaults is in
-# tb_rpu_surface_top. Opt-in (-DRPU_SIM_EXTRA=ON): the iterative form at n = 8, n1 = 1 (a pass
-# unit with an idle lane in the steps).
+# pieces. Opt-in (-DRPU_SIM_EXTRA=ON), three configurations; the iterative form at the defaults
+# is in tb_rpu_surface_top:
+# - unrolled, narrow (LW 18, AW 14, 6 turn lanes, n = 6, n1 = 3, first step 4 bits: 5 pass units
+#   of 7 indicators; step 1 takes 3 passes, step 2 the remaining 2 bits);
+# - iterative at n = 8, n1 = 1 with the default first step (7 bits: 64 passes of 2 lanes, the
+#   last with an idle lane);
+# - iterative at the defaults with the seed's schedule (N1First = 0: K + 1 = 9 passes).
 rpu_verilated_test(tb_rpu_surface_ip_unrolled_lw18 EXTRA TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
-                   PARAMS -GUnrolled=1 -GSurfW=18 -GAngleW=14 -GTurns=6 -GN=6 -GN1=3 -GCtxW=24
-                   DEFS UNROLLED=1 SURF_W=18 ANGLE_W=14 TURNS=6 IP_N=6 IP_N1=3 CTX_W=24)
+                   PARAMS -GUnrolled=1 -GSurfW=18 -GAngleW=14 -GTurns=6 -GN=6 -GN1=3 -GN1First=4
+                          -GCtxW=24
+                   DEFS UNROLLED=1 SURF_W=18 ANGLE_W=14 TURNS=6 IP_N=6 IP_N1=3 SURF_N1_FIRST=4
+                        CTX_W=24)
 rpu_verilated_test(tb_rpu_surface_ip_iter_n8_n1_1 EXTRA TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
                    PARAMS -GUnrolled=0 -GN=8 -GN1=1 -GCtxW=24
                    DEFS UNROLLED=0 IP_N=8 IP_N1=1 CTX_W=24)
+rpu_verilated_test(tb_rpu_surface_ip_iter_seed EXTRA TOP rpu_surface_ip
+                   TB tb/surface/tb_rpu_surface_ip.cpp
+                   PARAMS -GUnrolled=0 -GN1First=0 -GCtxW=24
+                   DEFS UNROLLED=0 SURF_N1_FIRST=0 CTX_W=24)

@@ -2,8 +2,9 @@
 # process_surface_piece on every surface of the scenes/surf_*.json demo scenes (camera pixels,
 # image-border pixels, grazing rays, range-plane rays, eyes inside the bounding sphere; every
 # piece), the latency of every item and the full-load rate; at the defaults: the iterative IP
-# (one pass unit with 3 indicators, n = 16, n1 = 2). rpu_surface_ip alone: rpu_surface_ip.cmake.
-# Opt-in (-DRPU_SIM_EXTRA=ON): its Verilated C++ takes about 8 CPU-minutes to compile.
+# (one pass unit with 3 indicators, n = 16, n1 = 2, first step 7 bits: 49 passes per item).
+# rpu_surface_ip alone: rpu_surface_ip.cmake. Opt-in (-DRPU_SIM_EXTRA=ON): about 1.5 CPU-minutes
+# of Verilated C++ and a minute of run.
 rpu_verilated_test(tb_rpu_surface_top EXTRA TOP rpu_surface_top TB tb/surface/tb_rpu_surface_top.cpp
                    PARAMS -GTagW=16
                    DEFS TAG_W=16 UNROLLED=0)
