@@ -56,7 +56,7 @@
 `define RPU_FW1W(n)          (`RPU_FW + (n) + 8)       // W's m term
 `define RPU_FW2W             (`RPU_FW + 5)             // W's m² term
 `define RPU_FCAW(tfrac)      (`RPU_FCW + (tfrac) + 3)  // c2·α, c2·β, s2·α, s2·β
-// The surface sign search (rtl/surface/rpu_surface_state.vh): indicators of one pass unit,
-// max(2^n1 − 1, 2), and the width of an item's search state.
-`define RPU_SLANES(n1)        (((1 << (n1)) - 1) > 2 ? ((1 << (n1)) - 1) : 2)
-`define RPU_SSTW(n, n1)       (3 * (n) + 33 + `RPU_SLANES(n1) * ((n) + 1))
+// The surface sign search (rtl/surface/rpu_surface_state.vh): indicators of one pass unit (ind,
+// or 2^n1 − 1 when ind = 0), and the width of an item's search state.
+`define RPU_SLANES(n1, ind)   ((ind) != 0 ? (ind) : (1 << (n1)) - 1)
+`define RPU_SSTW(n, n1, ind)  (3 * (n) + 34 + `RPU_SLANES(n1, ind) * ((n) + 1))

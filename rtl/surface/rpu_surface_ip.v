@@ -1,11 +1,12 @@
 // rpu_surface_ip: the sign search of one surface piece (docs/surfaces.md, "The search on a
 // piece"), twin of rpu::ref::surface_ip (ref/model/surface/rpu_surface_ip.{h,cpp}). The search
-// runs as P passes of rpu_surface_ip_step (NC = max(2^N1 − 1, 2) indicators each): pass 0
-// evaluates the ends τ = 0 and τ = 1, then step k (b_k bits: N1First for step 1, 0 meaning N1;
-// N1 for each later step, the last what remains of N) takes ⌈(2^b_k − 1)/NC⌉ passes for its
-// 2^b_k − 1 new candidates; a step 1 without a sign change is a miss. P = rpu_surface_passes
-// (rpu_surface_latency.vh; ref::surface_ip_passes): 49 at the defaults (N 16, N1 2, N1First 7:
-// steps of 7, 2, 2, 2, 2, 1 bits, 142 candidates), K + 1 with N1First = 0.
+// runs as P passes of rpu_surface_ip_step (NC = Indicators indicators each, 0 meaning 2^N1 − 1):
+// step k (b_k bits: N1First for step 1, 0 meaning N1; N1 for each later step, the last what
+// remains of N) takes ⌈(2^b_1 + 1)/NC⌉ passes for step 1's candidates, the ends τ = 0 and τ = 1
+// among them, and ⌈(2^b_k − 1)/NC⌉ for the new candidates of each later step; a step 1 without a
+// sign change is a miss. P = rpu_surface_passes (rpu_surface_latency.vh;
+// ref::surface_ip_passes): 48 at the defaults (N 16, N1 2, N1First 7, 3 indicators: steps of 7,
+// 2, 2, 2, 2, 1 bits, 142 candidates), K + 1 with N1First = 0; 142 with one indicator.
 //   Unrolled = 1: P pass units in a pipeline (P·NC indicators), one item per cycle, ready_o = 1;
 //                 the item's data rides the pass units' tags.
 //   Unrolled = 0: one pass unit, used P times by each item (the default: 3 indicators). An item
@@ -15,7 +16,7 @@
 //                 At full load one item per P cycles; bursts of up to one ring period (L items)
 //                 are taken back to back.
 // Both forms have the same fixed latency P·L + 1, L = one pass (rpu_surface_pass_latency,
-// rpu_surface_latency.vh; ref::surface_ip_latency: 3,921 at the defaults), and keep the input
+// rpu_surface_latency.vh; ref::surface_ip_latency: 3,841 at the defaults), and keep the input
 // order. The item's search state (rpu_surface_state.vh) carries its schedule: the pass unit reads
 // from it what to evaluate, and sets done after the last pass.
 //
@@ -67,7 +68,7 @@ module rpu_surface_ip #(
 `include "rpu_surface_state.vh"
   localparam integer StW = SsW;
   localparam integer L   = rpu_surface_pass_latency(SurfW, AngleW, N);
-  localparam integer P   = rpu_surface_passes(N, N1, N1First);
+  localparam integer P   = rpu_surface_passes(N, N1, N1First, Indicators);
   localparam integer B1  = rpu_surface_first_bits(N, N1, N1First);
   // An item's data, {ctx, desc, la, lab, x_negative, last_turn}; offsets from the bottom.
   localparam integer DBranchO = 0;
@@ -83,6 +84,7 @@ module rpu_surface_ip #(
     if (N1 < 1 || N1 > 8 || N % N1 != 0)
       $fatal(1, "rpu_surface_ip: N1 must be in 1..8 and divide N");
     if (N1First < 0 || N1First > 10) $fatal(1, "rpu_surface_ip: N1First must be in 0..10");
+    if (Indicators < 0 || Indicators > 64) $fatal(1, "rpu_surface_ip: Indicators must be in 0..64");
     if (Unrolled != 0 && Unrolled != 1) $fatal(1, "rpu_surface_ip: Unrolled must be 0 or 1");
     if (CtxW < 1) $fatal(1, "rpu_surface_ip: CtxW must be >= 1");
     if (DescW != SdW || LabW != SurfW + 1)
@@ -90,20 +92,28 @@ module rpu_surface_ip #(
   end
 
   wire [DW-1:0]  data_in = {ctx_i, desc_i, la_i, lab_i, x_negative_i, last_turn_i};
-  // The state an item starts with: pass 0 next (lanes 0, 1 at m = 0 and 2^N), step 1's bits and
-  // shift, live = run_i; everything else 0.
+  // The state an item starts with: step 1's first pass next (lane e at m = e·2^shift), step 1's
+  // bits and shift, live = run_i; everything else 0.
   localparam integer     Shift1I = N - B1;
   localparam [SsBW-1:0]  Bits1  = B1[SsBW-1:0];
   localparam [SsShW-1:0] Shift1 = Shift1I[SsShW-1:0];
-  localparam [SsMW-1:0]  MEnd   = {1'b1, {N{1'b0}}};
+  wire [SsLanes*SsMW-1:0] m_in;
+  genvar g;
+  generate
+    for (g = 0; g < SsLanes; g = g + 1) begin : g_m_in
+      localparam [SsMW-1:0] Lane = g;
+      assign m_in[g*SsMW +: SsMW] = Lane << Shift1I;
+    end
+  endgenerate
   reg [StW-1:0] st_in;
   always @(*) begin
     st_in = {StW{1'b0}};
-    st_in[SsLiveO]            = run_i;
-    st_in[SsStartO]           = 1'b1;
-    st_in[SsBitsO +: SsBW]    = Bits1;
-    st_in[SsShiftO +: SsShW]  = Shift1;
-    st_in[SsMO + SsMW +: SsMW] = MEnd;
+    st_in[SsLiveO]                  = run_i;
+    st_in[SsStartO]                 = 1'b1;
+    st_in[SsFirstO]                 = 1'b1;
+    st_in[SsBitsO +: SsBW]          = Bits1;
+    st_in[SsShiftO +: SsShW]        = Shift1;
+    st_in[SsMO +: SsLanes*SsMW]     = m_in;
   end
 
   `define RPU_SURFACE_PASS_DATA(D) \
@@ -126,7 +136,7 @@ module rpu_surface_ip #(
       for (k = 0; k < P; k = k + 1) begin : g_pass
         wire [DW-1:0] d = dt[k*DW +: DW];
         rpu_surface_ip_step #(.SurfW(SurfW), .AngleW(AngleW), .Turns(Turns), .N(N), .N1(N1),
-                              .N1First(N1First), .CtxW(DW)) u_pass (
+                              .N1First(N1First), .Indicators(Indicators), .CtxW(DW)) u_pass (
           .clk_i, .rst_ni, .valid_i(v[k]), .state_i(st[k*StW +: StW]), `RPU_SURFACE_PASS_DATA(d),
           .ctx_i(d), .valid_o(v[k+1]), .state_o(st[(k+1)*StW +: StW]), .ctx_o(dt[(k+1)*DW +: DW]));
       end
@@ -168,7 +178,7 @@ module rpu_surface_ip #(
       wire [StW-1:0] in_st    = recirc ? ret_st : st_in;
       wire [DW-1:0]  in_d     = recirc ? rd_q : data_in;
       rpu_surface_ip_step #(.SurfW(SurfW), .AngleW(AngleW), .Turns(Turns), .N(N), .N1(N1),
-                            .N1First(N1First), .CtxW(1)) u_pass (
+                            .N1First(N1First), .Indicators(Indicators), .CtxW(1)) u_pass (
         .clk_i, .rst_ni, .valid_i(in_valid), .state_i(in_st), `RPU_SURFACE_PASS_DATA(in_d),
         .ctx_i(1'b0), .valid_o(ret_valid), .state_o(ret_st), .ctx_o(ret_ctx_unused));
       assign out_valid = leave;

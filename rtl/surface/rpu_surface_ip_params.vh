@@ -7,3 +7,4 @@
   parameter integer N        = 16,  // result bits of τ (1..40)
   parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
   parameter integer N1First  = 7,   // bits of step 1 (0: N1, the seed's search; 1..10, at most N used)
+  parameter integer Indicators = 0, // indicators of the pass unit (1..64; 0: 2^N1 − 1)

@@ -1,24 +1,27 @@
 // rpu_surface_ip_step: one pass of the surface sign search (docs/surfaces.md, "The search on a
-// piece"), twin of the steps of rpu::ref::surface_ip (pass 0: surface_ip_start; the passes of step
-// k: surface_ip_step). τ is an N-bit dyadic index m (τ = m·2^-N); the candidate at m is
+// piece"), twin of the steps of rpu::ref::surface_ip (step 1's passes: surface_ip_start and
+// surface_ip_step; the passes of step k: surface_ip_step). τ is an N-bit dyadic index m (τ = m·2^-N); the candidate at m is
 //   pr_local(m) = lA' + floor(lAB'·m·2^-N)          (llsb; every product an rpu_mul)
-// and its inside bit comes from an rpu_indicator, one per lane: NC = max(2^N1 − 1, 2) lanes.
+// and its inside bit comes from an rpu_indicator, one per lane: NC = Indicators lanes (0: 2^N1 − 1,
+// so that every step after the first takes one pass; 3 at the defaults).
 // The item's search state (rpu_surface_state.vh) says what a pass does, so one unit serves every
 // pass: the iterative form uses one unit for all of an item's passes, the unrolled form chains
 // one unit per pass.
-//   pass 0     lanes 0, 1 evaluate m = 0 and m = 2^N: lo = s(0), hi = s(2^N), τ = 0.
 //   step k     b_k bits (N1First for step 1, 0 meaning N1; N1 for each later step, the last
-//              what remains of N), J = 2^b_k sub-intervals, 2^b_k − 1 new candidates
-//              j = 1 .. J − 1 at m = τ + j·2^shift, shift = N − (b_1 + … + b_k). They take
-//              ⌈(J − 1)/NC⌉ passes, lane e of the pass with j0 candidates before it evaluating
-//              j = j0 + e + 1 (the lanes past J − 1 idle, their overflow masked). The change bits
-//              c_j = s_j ^ s_{j+1} are taken pass by pass, s_0 = lo, s_J = hi, the previous
-//              pass's last candidate (prev) joining the next pass's first; the first change of the
-//              step (the lowest j) is kept (found, its interval's start m and end bits). After the
-//              step's last pass τ' = that start, lo' = s_η, hi' = s_{η+1}; no change: the piece
-//              misses (live' = 0; only possible at step 1). Each pass's lanes' m come with the
-//              state (the next pass's computed here), so the multipliers see register outputs.
-// With N1First = 0 (the seed's schedule) every step takes one pass: K + 1 passes.
+//              what remains of N), J = 2^b_k sub-intervals, candidates at m = τ + j·2^shift,
+//              shift = N − (b_1 + … + b_k). Step 1 evaluates j = 0 .. J, the ends τ = 0 and
+//              τ = 1 among them, in ⌈(J + 1)/NC⌉ passes, lane e of the pass with j0 candidates
+//              before it evaluating j = j0 + e; each later step the J − 1 new candidates
+//              j = 1 .. J − 1 in ⌈(J − 1)/NC⌉ passes, lane e evaluating j = j0 + e + 1, with
+//              s_0 = lo and s_J = hi from the step before. Lanes past the step's candidates idle,
+//              their overflow masked. The change bits c_j = s_j ^ s_{j+1} are taken pass by pass,
+//              the previous pass's last candidate (prev) joining the next pass's first; the first
+//              change of the step (the lowest j) is kept (found, its interval's start m and end
+//              bits). After the step's last pass τ' = that start, lo' = s_η, hi' = s_{η+1}; no
+//              change: the piece misses (live' = 0; only possible at step 1). Each pass's lanes'
+//              m come with the state (the next pass's computed here), so the multipliers see
+//              register outputs.
+// With N1First = 0 (the seed's schedule) and NC = 2^N1 − 1: K + 1 passes.
 //
 // State: rpu_surface_state.vh. A pass on an item that is not live changes no result and flags
 // nothing (the twin stops evaluating after a miss, and never runs a piece that does not exist),
@@ -44,7 +47,7 @@ module rpu_surface_ip_step #(
 `include "rpu_surface_ip_params.vh"
   parameter integer CtxW   = 1,   // caller's context passed through (>= 1)
   // Derived (do not override).
-  parameter integer StW    = `RPU_SSTW(N, N1),    // the search state (rpu_surface_state.vh)
+  parameter integer StW    = `RPU_SSTW(N, N1, Indicators),  // the search state (rpu_surface_state.vh)
   parameter integer LabW   = SurfW + 1,           // lB' − lA'
   parameter integer DescW  = `RPU_SDW(SurfW)       // the packed descriptor (rpu_surface_desc.vh)
 ) (
@@ -67,7 +70,7 @@ module rpu_surface_ip_step #(
 `include "rpu_surface_desc.vh"
 `include "rpu_surface_state.vh"
   localparam integer LW    = SurfW;
-  localparam integer NC    = SsLanes;                     // lanes: max(2^N1 − 1, 2)
+  localparam integer NC    = SsLanes;                     // lanes: Indicators, or 2^N1 − 1
   localparam integer MW_   = N + 2;                       // m as a non-negative signed operand
   localparam integer PW    = LabW + MW_;                  // lAB'_c · m, exact
   localparam integer FW    = PW - N;                      // p >>> N: LW + 3 bits
@@ -83,6 +86,8 @@ module rpu_surface_ip_step #(
     if (N1 < 1 || N1 > 8) $fatal(1, "rpu_surface_ip_step: N1 must be in 1..8");
     if (N % N1 != 0) $fatal(1, "rpu_surface_ip_step: N must be a multiple of N1");
     if (N1First < 0 || N1First > 10) $fatal(1, "rpu_surface_ip_step: N1First must be in 0..10");
+    if (Indicators < 0 || Indicators > 64)
+      $fatal(1, "rpu_surface_ip_step: Indicators must be in 0..64");
     if (CtxW < 1) $fatal(1, "rpu_surface_ip_step: CtxW must be >= 1");
     if (StW != SsW || LabW != SurfW + 1 || DescW != SdW)
       $fatal(1, "rpu_surface_ip_step: derived parameters must not be overridden");
@@ -178,15 +183,18 @@ module rpu_surface_ip_step #(
   // ---- stage A: the lanes used, the change bits, the pass's last candidate; the next pass's
   // ---- schedule and candidates, precomputed ----
   wire [StW-1:0]   a_st    = ind_it[CtxW +: StW];
-  wire             a_start = a_st[SsStartO];
+  wire             a_start = a_st[SsStartO];   // step 1's first pass: no prev
+  wire             a_first = a_st[SsFirstO];   // step 1: the ends are candidates, no hi
   wire [SsBW-1:0]  a_bits  = a_st[SsBitsO +: SsBW];
   wire [SsShW-1:0] a_shift = a_st[SsShiftO +: SsShW];
   wire [SsJW-1:0]  a_j0    = a_st[SsJ0O +: SsJW];
-  // The step's candidates not yet evaluated before this pass: J − 1 − j0 (≥ 1).
-  wire [SsJW-1:0]  a_jm1   = ({{(SsJW - 1){1'b0}}, 1'b1} << a_bits) - 1'b1;
-  wire [SsJW-1:0]  a_cnt   = a_jm1 - a_j0;
+  // The step's candidates not yet evaluated before this pass: J + 1 − j0 in step 1, J − 1 − j0
+  // later (≥ 1).
+  wire [SsJW-1:0]  a_jj    = ({{(SsJW - 1){1'b0}}, 1'b1} << a_bits);
+  wire [SsJW-1:0]  a_jpm   = a_first ? a_jj + 1'b1 : a_jj - 1'b1;
+  wire [SsJW-1:0]  a_cnt   = a_jpm - a_j0;
   localparam [SsJW-1:0] NcJ = NC[SsJW-1:0];
-  wire             a_last  = ~a_start & (a_cnt <= NcJ);  // the step's last pass
+  wire             a_last  = a_cnt <= NcJ;               // the step's last pass
   wire [NC-1:0]    used, lastlane;
   wire [NC:0]      x;                                    // x_0 = prev, x_{e+1} = lane e
   assign x[0] = a_st[SsPrevO];
@@ -195,7 +203,7 @@ module rpu_surface_ip_step #(
       localparam integer    E1I = e + 1;
       localparam [SsJW-1:0] E1 = E1I[SsJW-1:0];
       assign x[e+1]      = ind_inside[e];
-      assign used[e]     = a_start ? (e < 2) : (a_cnt >= E1);
+      assign used[e]     = a_cnt >= E1;
       assign lastlane[e] = a_last ? (a_cnt == E1) : (e == NC - 1);
     end
   endgenerate
@@ -207,22 +215,25 @@ module rpu_surface_ip_step #(
     for (q = 0; q < NC; q = q + 1)
       m_last = m_last | ({N{lastlane[q]}} & a_st[SsMO + q*SsMW +: N]);
   end
-  // Change bits: c_e between x_e and x_{e+1} (lanes used), c_NC between the step's last
-  // candidate and hi (the step's last pass only).
+  // Change bits: c_e between x_e and x_{e+1} (lanes used; c_0 not in step 1's first pass), c_NC
+  // between the step's last candidate and hi (the last pass of a step after the first).
   wire [NC:0] chg;
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_chg
-      assign chg[e] = ~a_start & used[e] & (x[e] ^ x[e+1]);
+      if (e == 0) begin : g_c0
+        assign chg[e] = ~a_start & used[e] & (x[e] ^ x[e+1]);
+      end else begin : g_ce
+        assign chg[e] = used[e] & (x[e] ^ x[e+1]);
+      end
     end
   endgenerate
-  assign chg[NC] = a_last & (s_last ^ a_st[SsHiO]);
+  assign chg[NC] = a_last & ~a_first & (s_last ^ a_st[SsHiO]);
   wire lanes_ovf = |(ind_ovf & used);
-  // The next step's bits min(N1, shift) and shift; at pass 0 the next pass is step 1, whose bits
-  // and shift the state already holds.
+  // The next step's bits min(N1, shift) and shift.
   localparam [SsShW-1:0] N1S = N1[SsShW-1:0];
   wire [SsShW-1:0] nb8     = a_shift < N1S ? a_shift : N1S;
-  wire [SsShW-1:0] n_shift = a_start ? a_shift : a_shift - nb8;
-  wire [SsBW-1:0]  n_bits  = a_start ? a_bits : nb8[SsBW-1:0];
+  wire [SsShW-1:0] n_shift = a_shift - nb8;
+  wire [SsBW-1:0]  n_bits  = nb8[SsBW-1:0];
   wire             n_done  = a_last & (a_shift == {SsShW{1'b0}});
   wire [SsJW-1:0]  j0_next = a_j0 + NcJ;
   localparam [SsMW-1:0] NcM = NC[SsMW-1:0];
@@ -256,7 +267,6 @@ module rpu_surface_ip_step #(
           b_nshift_q, b_nbits_q, b_j0n_q, b_pre_q, b_madd_q}));
 
   // ---- stage B: the one-hot of the lowest change bit, the AND-OR select, the next state ----
-  wire         b_start = b_st_q[SsStartO];
   wire         b_live  = b_st_q[SsLiveO];
   wire         b_found = b_st_q[SsFoundO];
   reg  [NC:0]  onehot;
@@ -290,35 +300,25 @@ module rpu_surface_ip_step #(
   wire         lo_e    = hit_end ? slo : b_st_q[SsLoO];
   wire         hi_e    = hit_end ? shi : b_st_q[SsHiO];
   wire         ovf1    = b_st_q[SsOvfO] | (b_live & b_ovf_q);
-  // The next pass's lanes: a new step (after pass 0 or a step's last pass) starts at its τ.
-  wire [N-1:0] tau_new = b_start ? {N{1'b0}} : tau_e;
+  // The next step's lanes start at its τ.
   wire [NC*SsMW-1:0] m_new;
   generate
     for (e = 0; e < NC; e = e + 1) begin : g_m_new
-      assign m_new[e*SsMW +: SsMW] = {1'b0, tau_new} | b_pre_q[e*SsMW +: SsMW];
+      assign m_new[e*SsMW +: SsMW] = {1'b0, tau_e} | b_pre_q[e*SsMW +: SsMW];
     end
   endgenerate
   reg [StW-1:0] st_next;
   always @(*) begin
     st_next = b_st_q;
-    if (b_start) begin                                   // pass 0: the ends
-      st_next[SsTauO +: N]     = {N{1'b0}};
-      st_next[SsLoO]           = b_x_q[1];
-      st_next[SsHiO]           = b_x_q[2];
-      st_next[SsOvfO]          = ovf1;
-      st_next[SsFoundO]        = 1'b0;
-      st_next[SsPrevO]         = b_x_q[1];
-      st_next[SsMprevO +: N]   = {N{1'b0}};
-      st_next[SsStartO]        = 1'b0;
-      st_next[SsJ0O +: SsJW]   = {SsJW{1'b0}};
-      st_next[SsMO +: NC*SsMW] = m_new;
-    end else if (b_last_q) begin                         // the step's last pass
+    st_next[SsStartO] = 1'b0;
+    if (b_last_q) begin                                  // the step's last pass
       st_next[SsTauO +: N]     = tau_e;
       st_next[SsLoO]           = lo_e;
       st_next[SsHiO]           = hi_e;
       st_next[SsLiveO]         = b_live & found1;        // no change at step 1: a miss
       st_next[SsOvfO]          = ovf1;
       st_next[SsFoundO]        = 1'b0;
+      st_next[SsFirstO]        = 1'b0;
       st_next[SsPrevO]         = lo_e;
       st_next[SsMprevO +: N]   = tau_e;
       st_next[SsDoneO]         = b_done_q;

@@ -51,19 +51,21 @@ function integer rpu_surface_first_bits(input integer n, input integer n1, input
   rpu_surface_first_bits = n1f == 0 ? n1 : n1f < n ? n1f : n;
 endfunction
 
-// Indicators of one pass unit (ref::surface_ip_lanes): max(2^n1 − 1, 2).
-function integer rpu_surface_lanes(input integer n1);
-  rpu_surface_lanes = rpu_surface_max((1 << n1) - 1, 2);
+// Indicators of one pass unit (ref::surface_ip_lanes): ind, or 2^n1 − 1 when ind = 0.
+function integer rpu_surface_lanes(input integer n1, input integer ind);
+  rpu_surface_lanes = ind != 0 ? ind : (1 << n1) - 1;
 endfunction
 
-// Passes of one item (ref::surface_ip_passes): 1 for the ends, then ⌈(2^b − 1) / lanes⌉ per step.
-function integer rpu_surface_passes(input integer n, input integer n1, input integer n1f);
+// Passes of one item (ref::surface_ip_passes): step 1 evaluates its 2^b + 1 candidates, the ends
+// among them, each later step its 2^b − 1 new ones, lanes candidates per pass.
+function integer rpu_surface_passes(input integer n, input integer n1, input integer n1f,
+                                    input integer ind);
   integer lanes, left, b, passes;
   begin
-    lanes = rpu_surface_lanes(n1);
+    lanes = rpu_surface_lanes(n1, ind);
     b = rpu_surface_first_bits(n, n1, n1f);
     left = n - b;
-    passes = 1 + ((1 << b) - 1 + lanes - 1) / lanes;
+    passes = ((1 << b) + 1 + lanes - 1) / lanes;
     while (left > 0) begin
       b = left < n1 ? left : n1;
       left = left - b;

@@ -1,17 +1,18 @@
 // The search state of one surface work item (rpu_surface_ip_step, rpu_surface_ip), LSB first: what
 // the item carries from pass to pass of the sign search (docs/surfaces.md, "The search on a
-// piece"). Included inside a module that defines N and N1; its total SsW equals `RPU_SSTW
+// piece"). Included inside a module that defines N, N1 and Indicators; its total SsW equals `RPU_SSTW
 // (rpu_widths.vh), which a module uses for the port's width.
 //   ovf, live        the sticky overflow; the piece is searched and has not missed
 //   hi, lo, tau      the current step's interval: its ends' inside bits and its start m (N bits)
 //   found, prev      this step: a sign change was seen; the inside bit of the last candidate
 //   slo, shi, stau   this step: the first change's interval (ends' bits, start m)
 //   mprev            the m of the last candidate (prev)
-//   start, done      pass 0 (the ends) is next; the search is complete (the item leaves)
+//   start, first     the next pass is step 1's first (no prev); the item is in step 1
+//   done             the search is complete (the item leaves)
 //   bits, shift      the step's bits b and its shift (N minus the bits of the steps so far)
 //   j0               the step's candidates before this pass (a multiple of the lanes)
 //   m                the lanes' candidates, N + 1 bits each
-  localparam integer SsLanes = `RPU_SLANES(N1);
+  localparam integer SsLanes = `RPU_SLANES(N1, Indicators);
   localparam integer SsBW    = 4;                  // bits (1..10)
   localparam integer SsShW   = 8;                  // shift (0..N)
   localparam integer SsJW    = 11;                 // j0 (< 2^10)
@@ -28,7 +29,8 @@
   localparam integer SsStauO  = SsShiO + 1;
   localparam integer SsMprevO = SsStauO + N;
   localparam integer SsStartO = SsMprevO + N;
-  localparam integer SsDoneO  = SsStartO + 1;
+  localparam integer SsFirstO = SsStartO + 1;
+  localparam integer SsDoneO  = SsFirstO + 1;
   localparam integer SsBitsO  = SsDoneO + 1;
   localparam integer SsShiftO = SsBitsO + SsBW;
   localparam integer SsJ0O    = SsShiftO + SsShW;

@@ -24,7 +24,7 @@
 // default): the IP's ring takes an item only into a free slot, so the items are admitted here,
 // a setup latency ahead, by rpu_surface_admit (the ring's occupancy mirrored: ready_o is a
 // compare of a register); every admitted item finds its slot, so the latency stays fixed. At full
-// load one item per P cycles, P the search's passes (rpu_surface_passes: 49 at the defaults),
+// load one item per P cycles, P the search's passes (rpu_surface_passes: 48 at the defaults),
 // bursts of up to one ring period back to back.
 // The indicator fields wait for the setup in a FIFO (rpu_fifo, block RAM, first-word
 // fall-through: the head is at its output when the setup delivers that item); the setup's
@@ -36,8 +36,8 @@
 //   1     X = A' + (p >>> N), X − h = (A' − h) + (p >>> N), both exact
 //   Ld    (X − h)_c · W_c, (CoordW + 1) × EdgeW signed (in this order: 2 DSP tiles, not 4)
 //   1     depth = the sum of the three (one carry-save step and one adder); outputs registered
-// Latency = setup + IP + Lx + 1 + Ld + 1 (ref::surface_top_latency; 105 + 3,921 + 2 + 1 + 3 + 1 =
-// 4,033 at the defaults).
+// Latency = setup + IP + Lx + 1 + Ld + 1 (ref::surface_top_latency; 105 + 3,841 + 2 + 1 + 3 + 1 =
+// 3,953 at the defaults).
 `default_nettype none
 `include "rpu_widths.vh"
 
@@ -90,7 +90,7 @@ module rpu_surface_top #(
 `include "rpu_surface_desc.vh"
   localparam integer CW   = CoordW;
   localparam integer LW   = SurfW;
-  localparam integer P    = rpu_surface_passes(N, N1, N1First);  // passes of the search
+  localparam integer P    = rpu_surface_passes(N, N1, N1First, Indicators);  // the search's passes
   localparam integer LabW = SurfW + 1;
   localparam integer L    = rpu_surface_pass_latency(SurfW, AngleW, N);
   // The IP's context (the setup's results the tail needs), offsets from the bottom:
@@ -165,7 +165,8 @@ module rpu_surface_top #(
   wire [N-1:0]    ip_tau;
   wire [CtxW-1:0] ip_ctx;
   rpu_surface_ip #(.SurfW(SurfW), .AngleW(AngleW), .Turns(Turns), .N(N), .N1(N1),
-                   .N1First(N1First), .Unrolled(Unrolled), .CtxW(CtxW)) u_ip (
+                   .N1First(N1First), .Indicators(Indicators), .Unrolled(Unrolled), .CtxW(CtxW))
+      u_ip (
     .clk_i, .rst_ni, .valid_i(su_valid), .ready_o(ip_ready), .run_i(su_piece_valid),
     .la_i(su_la), .lab_i(su_lab), .x_negative_i(su_xneg), .last_turn_i(su_last),
     .desc_i(df_desc),

@@ -59,6 +59,9 @@
 #ifndef ANGLE_W
 #define ANGLE_W 20
 #endif
+#ifndef SURF_IND
+#define SURF_IND 0  // rpu_surface_ip's Indicators (0: 2^n1 − 1)
+#endif
 #ifndef SURF_N1_FIRST
 #define SURF_N1_FIRST 7  // rpu_surface_ip's N1First (0: the seed's schedule)
 #endif

@@ -3,7 +3,6 @@
 // the headers of those modules; the same formulas in Verilog: rtl/surface/rpu_surface_latency.vh).
 #include "model/surface/rpu_surface_latency.h"
 
-#include <algorithm>
 
 #include "model/common/rpu_mul.h"
 #include "model/surface/rpu_indicator_latency.h"
@@ -17,26 +16,32 @@ int surface_ip_pass_latency(const HwParams& p) {
   return products + 1 + indicator_latency(p) + 2;
 }
 
-int surface_ip_lanes(const HwParams& p) { return std::max(p.J() - 1, 2); }
+int surface_ip_lanes(const HwParams& p, int indicators) {
+  return indicators != 0 ? indicators : p.J() - 1;
+}
 
-int surface_ip_passes(const HwParams& p) {
-  const int lanes = surface_ip_lanes(p);
-  int passes = 1;
-  for (int k = 1; k <= p.surface_steps(); ++k)
-    passes += ((1 << p.surface_step_bits(k)) - 1 + lanes - 1) / lanes;
+int surface_ip_passes(const HwParams& p, int indicators) {
+  const int lanes = surface_ip_lanes(p, indicators);
+  int passes = 0;
+  for (int k = 1; k <= p.surface_steps(); ++k) {
+    const int candidates = (1 << p.surface_step_bits(k)) + (k == 1 ? 1 : -1);
+    passes += (candidates + lanes - 1) / lanes;
+  }
   return passes;
 }
 
-int surface_ip_latency(const HwParams& p) {
-  return surface_ip_passes(p) * surface_ip_pass_latency(p) + 1;
+int surface_ip_latency(const HwParams& p, int indicators) {
+  return surface_ip_passes(p, indicators) * surface_ip_pass_latency(p) + 1;
 }
 
-int surface_ip_interval(const HwParams& p) { return p.unrolled ? 1 : surface_ip_passes(p); }
+int surface_ip_interval(const HwParams& p, int indicators) {
+  return p.unrolled ? 1 : surface_ip_passes(p, indicators);
+}
 
-int surface_top_latency(const HwParams& p) {
+int surface_top_latency(const HwParams& p, int indicators) {
   const int x_products = mul_latency(p.diff_w(), p.n + 1, true);        // AB'·τ
   const int depth_products = mul_latency(p.diff_w(), p.edge_w(), true);  // (X − h)·W
-  return surface_setup_latency(p) + surface_ip_latency(p) + x_products + 1 + depth_products + 1;
+  return surface_setup_latency(p) + surface_ip_latency(p, indicators) + x_products + 1 + depth_products + 1;
 }
 
 }  // namespace rpu::ref

@@ -50,10 +50,13 @@ struct Item {
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_surface_ip> tb("tb_rpu_surface_ip", argc, argv);
   auto& rng = tb.rng;
-  const long latency = ref::surface_ip_latency(kP);
+  const long latency = ref::surface_ip_latency(kP, SURF_IND);
   const long scale = std::max<long>(1, tb.vectors(1));
-  std::printf("tb_rpu_surface_ip: LW %d, AW %d, %d turn lanes, n %d, n1 %d, %s, latency %ld\n", LW,
-              kP.angle_w, kTurns, kP.n, kP.n1, kP.unrolled ? "unrolled" : "iterative", latency);
+  std::printf("tb_rpu_surface_ip: LW %d, AW %d, %d turn lanes, n %d, n1 %d, first step %d bits, "
+              "%d indicators, %d passes, %s, latency %ld\n",
+              LW, kP.angle_w, kTurns, kP.n, kP.n1, kP.surface_first_bits(),
+              ref::surface_ip_lanes(kP, SURF_IND), ref::surface_ip_passes(kP, SURF_IND),
+              kP.unrolled ? "unrolled" : "iterative", latency);
 
   std::deque<scene::CompiledScene> scenes;
   const std::vector<sim::SurfCase> cases = sim::load_surface_cases(kP, scenes);

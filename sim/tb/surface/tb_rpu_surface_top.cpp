@@ -54,10 +54,11 @@ struct Batch {
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_surface_top> tb("tb_rpu_surface_top", argc, argv);
   auto& rng = tb.rng;
-  const long latency = ref::surface_top_latency(kP);
-  const int interval = ref::surface_ip_interval(kP);
+  const long latency = ref::surface_top_latency(kP, SURF_IND);
+  const int interval = ref::surface_ip_interval(kP, SURF_IND);
   const long scale = std::max<long>(1, tb.vectors(1));
-  std::printf("tb_rpu_surface_top: n %d, n1 %d, %s, latency %ld, interval %d\n", kP.n, kP.n1,
+  std::printf("tb_rpu_surface_top: n %d, n1 %d, first step %d bits, %d indicators, %s, latency %ld, "
+              "interval %d\n", kP.n, kP.n1, kP.surface_first_bits(), ref::surface_ip_lanes(kP, SURF_IND),
               kP.unrolled ? "unrolled" : "iterative", latency, interval);
 
   std::deque<scene::CompiledScene> scenes;

@@ -1,14 +1,15 @@
 # rpu_surface_ip alone against surface_ip: pieces of the scenes/surf_*.json surfaces from the
 # setup twin (camera pixels, border pixels, grazing and range-plane rays, eyes inside the sphere),
 # edited indicator fields (overflowing lanes), empty pieces with junk (run_i = 0) and random
-# pieces. Opt-in (-DRPU_SIM_EXTRA=ON), three configurations; the iterative form at the defaults
-# is in tb_rpu_surface_top:
-# - unrolled, narrow (LW 18, AW 14, 6 turn lanes, n = 6, n1 = 3, first step 4 bits: 5 pass units
-#   of 7 indicators; step 1 takes 3 passes, step 2 the remaining 2 bits);
-# - iterative at n = 8, n1 = 1 with the default first step (7 bits: 64 passes of 2 lanes, the
-#   last with an idle lane);
-# - iterative at the defaults with the seed's schedule (N1First = 0: K + 1 = 9 passes).
-rpu_verilated_test(tb_rpu_surface_ip_unrolled_lw18 EXTRA TOP rpu_surface_ip
+# pieces; the latency of every item.
+# - In the default suite: unrolled, narrow (LW 18, AW 14, 6 turn lanes, n = 6, n1 = 3, first step
+#   4 bits: step 1's 17 candidates in 3 passes of 7 indicators, step 2 the remaining 2 bits in
+#   one; 4 pass units).
+# - Opt-in (-DRPU_SIM_EXTRA=ON): iterative at n = 8, n1 = 1 with the default first step and one
+#   indicator (7 bits: 129 passes for step 1, 130 in all); iterative at the defaults with the
+#   seed's schedule (N1First = 0: K + 1 = 9 passes). The iterative form at the defaults is in
+#   tb_rpu_surface_top.
+rpu_verilated_test(tb_rpu_surface_ip_unrolled_lw18 TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
                    PARAMS -GUnrolled=1 -GSurfW=18 -GAngleW=14 -GTurns=6 -GN=6 -GN1=3 -GN1First=4
                           -GCtxW=24
