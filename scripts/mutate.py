@@ -51,8 +51,8 @@ class Family:
 
 
 # The plan: every RTL module, with the testbench that checks it against its twin. A module that
-# lives only inside another (rpu_add3/delay, rpu_surface_admit) is mutated in place in
-# its parent's testbench; rpu_top's own logic (credits, FIFO merge, resolve hookup) runs the
+# lives only inside another (rpu_add3/delay, rpu_surface_admit, rpu_surface_ip) is mutated in place
+# in its parent's testbench; rpu_top's own logic (credits, FIFO merge, resolve hookup) runs the
 # co-simulation frame (tb_rpu_top: every work item and pixel against the model).
 PLAN = [
     Family("rpu_fifo", "tb_rpu_fifo_narrow", 30),
@@ -76,6 +76,10 @@ PLAN = [
     Family("rpu_add3", "tb_rpu_indicator", 10),
     Family("rpu_delay", "tb_rpu_indicator", 10),
     Family("rpu_surface_setup", "tb_rpu_surface_setup", 80),
+    Family("rpu_surface_ip_step", "tb_rpu_surface_ip_iter_lw18", 60),
+    Family("rpu_surface_ip", "tb_rpu_surface_top_lw18", 30),
+    Family("rpu_surface_top", "tb_rpu_surface_top_lw18", 40),
+    Family("rpu_surface_admit", "tb_rpu_surface_top_lw18", 10),
     Family("rpu_top", "tb_rpu_top", 80),
 ]
 
