@@ -24,7 +24,7 @@
 // ctx_i: 571 bits at the defaults with a 1-bit ctx_i, 722 in rpu_surface_top) does not ride the
 // ring (that would be L × 571 flip-flops or SRL bits per ring slot, 45,680 at the defaults). Every item
 // in the ring has its own ring phase (the cycle it entered, modulo L), so a RAM of L entries
-// indexed by the phase holds it: written when the item enters (its pass 0 takes the input ports
+// indexed by the phase holds it: written when the item enters (its first pass takes the input ports
 // directly), read one cycle before each return (a registered read: block RAM), and for the exit
 // (ctx_o). The phase counter runs modulo L whether or not items flow. Yosys maps the RAM to
 // ⌈571 / 72⌉ = 8 RAMB36E1 (512 × 72) at the defaults.
@@ -173,7 +173,7 @@ module rpu_surface_ip #(
         rd_q <= mem_q[ph_next];
       end
       // The pass unit's input: the returning item (its next pass, its data from the RAM), else
-      // a new item (pass 0, its data from the ports).
+      // a new item (its first pass, its data from the ports).
       wire           in_valid = recirc || accept;
       wire [StW-1:0] in_st    = recirc ? ret_st : st_in;
       wire [DW-1:0]  in_d     = recirc ? rd_q : data_in;

@@ -5,7 +5,7 @@
 // remains of n; seed: n1 at every step), evaluates the candidates τ_{k−1} + j·2^-(b_1+…+b_k),
 // j = 0..2^b_k, of which 2^b_k − 1 are new (the ends are the previous interval's), and keeps the
 // lowest j whose inside bits differ at j and j + 1. Step 1 without a change is a miss. The RTL
-// runs the same schedule in passes of a unit of max(2^n1 − 1, 2) indicators
+// runs the same schedule in passes of a unit of Indicators indicators (0: 2^n1 − 1)
 // (surface_ip_passes), unrolled or iterative: the same arithmetic.
 #pragma once
 
