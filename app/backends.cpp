@@ -34,8 +34,7 @@ std::string rtl_configurations() {
 
 bool backend_applies(const std::string& backend, const scene::CompiledScene& sc) {
   if (backend == "float" || backend == "float-ip") return true;
-  if (!sc.patches.empty()) return false;
-  return sc.surfaces.empty() || backend == "ref";
+  return sc.patches.empty();  // curves, textures and surfaces: every backend
 }
 
 nlohmann::json patch_stats_json(const patch::PatchRenderOptions& o, const patch::PatchRenderStats& s) {
@@ -75,16 +74,11 @@ double model_depth_unit(const ref::ModelScene& m) {
 BackendResult run_backend(const std::string& backend, const scene::CompiledScene& sc,
                           const BackendOptions& o) {
   BackendResult r;
-  // Patches first: they have no fixed-point path at all, so they are the problem whenever a
-  // scene holds both (ref renders surfaces).
-  if (!backend_applies(backend, sc) && !sc.patches.empty())
+  // Patches have no fixed-point path at all.
+  if (!backend_applies(backend, sc))
     throw Error(sc.source + ": patches",
                 "the " + backend + " backend has no fixed-point path for parametric patches "
                 "(docs/algorithms.md §4); render them with --backend float or float-ip");
-  if (!backend_applies(backend, sc))
-    throw Error(sc.source + ": surfaces",
-                "the " + backend + " backend has no RTL path yet for vector-described surfaces "
-                "(docs/algorithms.md §3); render them with --backend float, float-ip or ref");
   r.render.name = backend;
   patch::PatchRenderOptions po = o.patch;
   po.threads = o.fl.threads;
@@ -153,6 +147,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
              {"pairs", s.items},
              {"curve_pairs", s.curve_items},
              {"texture_pairs", s.texture_items},
+             {"surface_pieces", s.surface_items},
              {"pixels_with_work", s.pixels},
              {"latency_cycles", s.latency_cycles},
              {"stall_cycles", s.stall_cycles},

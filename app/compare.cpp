@@ -40,41 +40,13 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
   for (const auto& p : sc.primitives) in.curve_primitive.push_back(p.kind == scene::Primitive::Kind::kCurve);
   bool rtl_ok = false, rtl_ran = false;
   nlohmann::json not_applicable = nlohmann::json::array(), patch_stats;
-  // A scene with surfaces (and no patches) still co-simulates its curves and textures: the RTL
-  // draws that part, and is compared with the model's render of the same part.
-  const bool rtl_part = sc.patches.empty() && !sc.surfaces.empty() &&
-                        !(sc.curve_segments.empty() && sc.texture_segments.empty());
-  scene::CompiledScene rtl_sc;
-  if (rtl_part) {
-    rtl_sc = sc;
-    rtl_sc.surfaces.clear();  // curve and texture ids come first: they keep theirs
-    in.rtl_scope = "the curves and textures; surfaces n/a";
-  }
   for (const std::string& b : backend_names()) {
-    // Patches: float only (docs/algorithms.md §4); surfaces: no RTL yet (the rest of the scene
-    // is co-simulated when there is any).
-    if (b == "rtl" && rtl_part && !o.skip_rtl) {
-      BackendResult r = run_backend(b, rtl_sc, o.backends);
-      BackendResult part = run_backend("ref", rtl_sc, o.backends);
-      if (!o.quiet)
-        std::cerr << fmt::format("  {:<8} {:>8.3f} s  {} hit pixels, {} pairs (curves and "
-                                 "textures; surfaces n/a)\n", b, r.render.seconds,
-                                 r.render.frame.hit_pixels(), r.pairs);
-      rtl_ran = true;
-      rtl_ok = r.rtl_ok;
-      in.rtl = r.rtl;
-      in.mismatch_lines = r.reports;
-      if (!r.trace_log.empty()) std::cerr << r.trace_log;
-      in.rtl_reference = std::move(part.render);
-      in.renders.push_back(std::move(r.render));
-      continue;
-    }
+    // Patches: float only (docs/algorithms.md §4).
     if (!backend_applies(b, sc)) {
       not_applicable.push_back(b);
       if (!o.quiet)
         std::cerr << fmt::format("  {:<8} not applicable ({})\n", b,
-                                 !sc.patches.empty() ? "patches: float only"
-                                                     : "surfaces: float and ref only");
+                                 "patches: float only");
       continue;
     }
     if (b == "rtl" && o.skip_rtl) continue;
@@ -143,8 +115,6 @@ int run_compare(const std::string& scene_arg, const scene::Scene& scene,
     for (const auto& line : in.mismatch_lines) std::cerr << line << "\n";
     std::cerr << fmt::format("{}: report {}\n",
                              !sc.patches.empty() ? "PATCHES (float backends only, ref/rtl not applicable)"
-                             : !sc.surfaces.empty() && !rtl_part
-                                 ? "SURFACES (float backends and ref, rtl not applicable)"
                              : !rtl_ran          ? "NO RTL (--no-rtl)"
                              : rtl_differs       ? "FAIL"
                                                  : "PASS",

@@ -364,13 +364,11 @@ std::string banner(const CompareInput& in, const nlohmann::json& metrics) {
     return fmt::format("<div class=\"banner fail\">FAIL: rtl == ref on all {} pixels, but {} work "
                        "items differ from the model in some field (see the mismatch records)</div>\n",
                        pixels, items.get<size_t>());
-  const std::string scope =
-      in.rtl_scope.empty() ? "" : " (the RTL draws " + escape_html(in.rtl_scope) + ")";
   if (differ == 0)
-    return fmt::format("<div class=\"banner pass\">PASS: rtl == ref on all {} pixels{}</div>\n",
-                       pixels, scope);
-  return fmt::format("<div class=\"banner fail\">FAIL: rtl differs from ref on {} of {} pixels{}</div>\n",
-                     differ, pixels, scope);
+    return fmt::format("<div class=\"banner pass\">PASS: rtl == ref on all {} pixels</div>\n",
+                       pixels);
+  return fmt::format("<div class=\"banner fail\">FAIL: rtl differs from ref on {} of {} pixels</div>\n",
+                     differ, pixels);
 }
 
 // The ref vs float-ip banner: shown when the difference exceeds the documented bound.
@@ -531,14 +529,8 @@ nlohmann::json pixel_records(const CompareInput& in, size_t& total) {
       const size_t k = f0.index(i, j);
       bool differ = false;
       for (size_t a = 0; a < all.size() && !differ; ++a)
-        for (size_t b = a + 1; b < all.size() && !differ; ++b) {
-          // The RTL is judged against what it draws (rtl_reference), not the whole scene.
-          const bool rtl_part = in.rtl_reference && (all[a]->name == "rtl" || all[b]->name == "rtl");
-          if (!rtl_part) differ = all[a]->frame.primitive[k] != all[b]->frame.primitive[k];
-        }
-      if (in.rtl_reference)
-        for (const auto* r : all)
-          if (r->name == "rtl") differ |= r->frame.primitive[k] != in.rtl_reference->frame.primitive[k];
+        for (size_t b = a + 1; b < all.size() && !differ; ++b)
+          differ = all[a]->frame.primitive[k] != all[b]->frame.primitive[k];
       if (!differ) continue;
       ++total;
       if (list.size() >= kMaxPixelRecords) continue;
@@ -653,8 +645,6 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
     const std::string key = key_name(a) + "_vs_" + key_name(b);
     const BackendRender* ra = find(a);
     const BackendRender* rb = find(b);
-    // The RTL against the model's render of what the RTL draws (all of it, or a part).
-    if (a == "rtl" && b == "ref" && ra && in.rtl_reference) rb = &*in.rtl_reference;
     if (!ra || !rb) {
       metrics[key + "_mismatched_pixels"] = nullptr;
       metrics["comparisons"][key] = nullptr;
@@ -696,17 +686,14 @@ CompareSummary write_report_files(const CompareInput& in, const fs::path& dir) {
   else
     metrics["curve_gaps_vs_float"] = nullptr;
   // How much slower the cycle-accurate co-simulation is than the model on the same frame (each
-  // backend's wall time; the model's render of what the RTL draws when that is a part).
+  // backend's wall time).
   {
     const BackendRender* rtl = find("rtl");
-    const BackendRender* model = in.rtl_reference ? &*in.rtl_reference : find("ref");
+    const BackendRender* model = find("ref");
     metrics["rtl_to_model_time"] = rtl && model && model->seconds > 0
                                        ? nlohmann::json(rtl->seconds / model->seconds)
                                        : nlohmann::json();
   }
-  metrics["rtl_scope"] = !find("rtl")           ? nlohmann::json()
-                         : in.rtl_scope.empty() ? nlohmann::json("the whole scene")
-                                                : nlohmann::json(in.rtl_scope);
 
   // ref vs float-ip against the documented bound (README; docs/fixed-point.md).
   if (const BackendRender* ref = find("ref"), *ip = find("float-ip"); ref && ip) {

@@ -38,11 +38,6 @@ struct CompareInput {
   nlohmann::json rtl;  // co-simulation statistics: cycles, pairs, latency_cycles, stall_cycles,
                        // items_per_cycle, sim_seconds, harness ("c++"/"systemc"), ...; may be null
   std::vector<std::string> mismatch_lines;  // human-readable mismatch records (first few)
-  // When the RTL draws only part of the scene (a scene with surfaces: its curves and textures),
-  // what it draws, and the model's render of that part, which rtl is compared with instead of
-  // the whole scene's ref render. Empty / absent: the RTL draws the whole scene.
-  std::string rtl_scope;
-  std::optional<BackendRender> rtl_reference;
   // The engineering record (run_record.h: command, git commit, tool versions) and the whole
   // run's wall time; may be null.
   nlohmann::json record;

@@ -66,28 +66,24 @@ int run_demo(const DemoOptions& options) {
   for (const auto& b : scenes) {
     const std::string arg = std::string("builtin:") + b.name;
     loaded.push_back(options.load ? options.load(arg) : load_scene_argument(arg));
+    scene::Camera& c = loaded.back().camera;
+    const int side = std::max(c.width, c.height), cap = options.surface_max_side;
+    if (!loaded.back().surfaces.empty() && cap > 0 && side > cap) {
+      c.width = std::max(1, static_cast<int>(static_cast<long long>(c.width) * cap / side));
+      c.height = std::max(1, static_cast<int>(static_cast<long long>(c.height) * cap / side));
+    }
   }
   std::vector<nlohmann::json> metrics(scenes.size());
   std::vector<int> codes(scenes.size(), 0);
   std::vector<std::string> errors(scenes.size());
   // Backends a scene's primitives have no path through (compare's "not_applicable": ref and rtl
-  // for patches, rtl for surfaces until the RTL traces them) and what the scene holds.
-  // What the RTL drew (compare's "rtl_scope"): "the whole scene", or a part of it.
-  const auto rtl_scope = [&](size_t k) -> std::string {
-    const auto it = metrics[k].find("rtl_scope");
-    return it != metrics[k].end() && it->is_string() ? it->get<std::string>() : std::string();
-  };
+  // for patches).
   const auto not_applicable = [&](size_t k) {
     const auto it = metrics[k].find("not_applicable");
     std::string list;
     if (it != metrics[k].end() && it->is_array())
       for (const auto& b : *it) list += (list.empty() ? "" : ", ") + b.get<std::string>();
     return list;
-  };
-  const auto float_only_kinds = [](const scene::Scene& s) {
-    return !s.patches.empty() && !s.surfaces.empty() ? std::string("patches and surfaces")
-           : !s.patches.empty()                      ? std::string("patches")
-                                                     : std::string("surfaces");
   };
   std::atomic<size_t> next{0};
   std::mutex print_mu;
@@ -111,15 +107,10 @@ int run_demo(const DemoOptions& options) {
                                !errors[k].empty() ? "error: " + errors[k]
                                : codes[k] != 0    ? "FAIL, see " + co.out_dir + "/report.html"
                                : !not_applicable(k).empty()
-                                   ? fmt::format("{}: float backends{} ({} not applicable)",
-                                                 float_only_kinds(loaded[k]),
-                                                 loaded[k].patches.empty() ? " and ref"
-                                                     : " and every patch method",
-                                                 not_applicable(k))
+                                   ? fmt::format("patches: float backends and every patch method "
+                                                 "({} not applicable)", not_applicable(k))
                                : co.skip_rtl      ? std::string("software backends only (--no-rtl)")
-                               : rtl_scope(k).empty() || rtl_scope(k) == "the whole scene"
-                                   ? std::string("PASS, rtl == ref")
-                                   : "PASS, rtl == ref on " + rtl_scope(k));
+                                                  : std::string("PASS, rtl == ref"));
     }
   };
   {
@@ -138,7 +129,7 @@ int run_demo(const DemoOptions& options) {
     m["scene"] = b.name;
     m["report"] = std::string(b.name) + "/report.html";
     summary.push_back(m);
-    // Scenes with backends not applicable (patches, surfaces) have no ref or rtl render: their
+    // Scenes with backends not applicable (patches) have no ref or rtl render: their
     // cells read "n/a", not "null".
     const bool float_only = !not_applicable(k).empty();
     const auto cell = [&](const char* key) -> std::string {
@@ -174,7 +165,7 @@ int run_demo(const DemoOptions& options) {
                              cell("ref_vs_float_mismatched_pixels"),
                              cell("float_ip_vs_float_mismatched_pixels"), cell("cycles"),
                              rc != 0      ? "FAIL"
-                             : float_only ? "n/a (" + float_only_kinds(sc) + ")"
+                             : float_only ? "n/a (patches)"
                              : options.compare.skip_rtl ? "not run" : "PASS",
                              escape_html(sc.about));
   }

@@ -18,6 +18,10 @@ struct DemoOptions {
   CompareOptions compare;  // backends, --no-rtl; out_dir is set per scene
   // Applies the size flags (--size, --max-side) to a loaded scene.
   std::function<scene::Scene(const std::string&)> load;
+  // Scenes with surfaces are scaled down to at most this side (0: off) after the size flags: a
+  // surface piece takes the search ring 142 cycles at the defaults, so a 256×256 surface frame is
+  // 9 to 28 million simulated cycles (docs/cosim.md, "Speed").
+  int surface_max_side = 48;
 };
 
 // Returns the process exit status: 0 when the RTL equals the model on every scene.

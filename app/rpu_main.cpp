@@ -462,6 +462,11 @@ int main(int argc, char** argv) {
   app::DemoOptions demo;
   demo_cmd->add_option("--out", demo.out_dir, "output directory")->capture_default_str();
   demo_cmd->add_flag("--no-rtl", demo.compare.skip_rtl, "skip the RTL (software backends only)");
+  demo_cmd->add_option("--surface-max-side", demo.surface_max_side,
+                       "scale scenes with surfaces down to at most this side (0 = off): their "
+                       "co-simulation takes 142 cycles per surface piece (docs/cosim.md)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   flags.add_to(*demo_cmd);
 
   auto* compare_cmd = app.add_subcommand(

@@ -18,6 +18,7 @@
 // common: the shared arithmetic blocks
 common/rpu_fifo.v
 common/rpu_stage.v
+common/rpu_skid.v
 common/rpu_latency_check.v
 common/rpu_delay.v
 common/rpu_add3.v
@@ -71,3 +72,4 @@ top/rpu_top.v
 // header: top/rpu_cam_desc.vh
 // header: top/rpu_seg_desc.vh
 // header: top/rpu_top_words.vh
+// header: top/rpu_surf_desc.vh

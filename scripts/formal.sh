@@ -45,12 +45,14 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
 # The reduced rpu_top: smallest widths, SqrtW 16 and the squared metric (shorter roots),
-# N = N1 = 1 (one IP step), 4 credits, 2-bit ids (ids stay distinct among <= 4 outstanding).
+# N = N1 = 1 (one IP step), 4 credits, 2-bit ids (ids stay distinct among <= 4 outstanding),
+# the narrowest surface search (LW 16, AW 12, 2 turn lanes, one indicator, a one-bit step 1).
 top_params="CoordW=12 DirFrac=8 TFrac=8 UnitFrac=8 EdgeFrac=8 InvW=8 SqrtW=16 N=1 N1=1
-  Metric=1 Unrolled=1 SegAddrW=1 IdxW=1 IdW=2 PrimW=1 FifoLog2=2"
+  Metric=1 Unrolled=1 SegAddrW=1 IdxW=1 IdW=2 PrimW=1 FifoLog2=2 SurfW=16 AngleW=12 Turns=2
+  N1First=1 Indicators=1 SurfAddrW=1"
 # Datapath outputs: removed from the ports so that their logic leaves the model.
 top_cut="res_pred1_o res_hit_o res_depth_o res_tau_o res_t_o res_x_o res_ovf_o res_prim_o
-  pix_hit_o pix_depth_o pix_prim_o"
+  res_pieces_o pix_hit_o pix_depth_o pix_prim_o"
 
 # target -> "module|defines|params|bmc depth|induction depth (0: none)|cover depth|expect"
 # Depths: rpu_top's texture result is first reachable at step 96, its curve result at step 136
@@ -64,7 +66,7 @@ declare -A spec=(
   [fifo]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|8|12|pass"
   [resolve]="rpu_resolve|RPU_FORMAL_RESOLVE|PixW=2 DepthW=3 PrimW=2|24|8|12|pass"
   [admit]="rpu_surface_admit|RPU_FORMAL_ADMIT|Period=3 Returns=2|24|8|16|pass"
-  [top]="rpu_top||$(echo $top_params)|$top_bmc|0|$top_cover|pass"
+  [top]="rpu_top|RPU_FORMAL_TOP|$(echo $top_params)|$top_bmc|0|$top_cover|pass"
   [fifo_bug_full]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
   [fifo_bug_stale]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
 )

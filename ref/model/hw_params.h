@@ -136,6 +136,13 @@ struct HwParams {
   int surf_mant_w() const { return surf_w + 2; }
   int surf_cut_frac() const { return surf_w + 2; }
   int surf_cordic_w() const { return surf_w + kSurfGuard + 4; }
+  int surf_desc_w() const { return 15 * surf_w + 61; }    // the indicator's word, `RPU_SDW
+  // SurfDW: a descriptor of rpu_top's surface RAM (rtl/top/rpu_surf_desc.vh): {primitive, c0,
+  // R2, origin, M, M's shift, y_min, y_max, end angle, end cos, end sin, indicator word}
+  int surface_ram_desc_w(int prim_w) const {
+    return prim_w + 6 * coord_w + r2_w() + 9 * surf_mant_w() + 7 + 2 * surf_w + angle_w +
+           2 * (surf_const_frac() + 2) + surf_desc_w();
+  }
 
   // Throws rpu::Error naming the flag when a value or combination is invalid: first each
   // parameter against its range in the table, then the combinations.

@@ -166,6 +166,7 @@ module rpu_surface_ip_step #(
   endgenerate
 
 `ifndef SYNTHESIS
+`ifndef FORMAL
   // The ring period and the top's admission count on LInd (rpu_surface_latency.vh): check it
   // against the instance, so that a change of rpu_indicator's schedule stops the simulation.
   reg [LInd-1:0] chk_valid_q;
@@ -178,6 +179,7 @@ module rpu_surface_ip_step #(
                LInd);
     end
   end
+`endif
 `endif
 
   // ---- stage A: the lanes used, the change bits, the pass's last candidate; the next pass's

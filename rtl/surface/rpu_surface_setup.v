@@ -210,7 +210,15 @@ module rpu_surface_setup #(
   rpu_fifo #(.Width(DescW), .Log2Depth(FifoLog2)) u_desc (
     .clk_i, .rst_ni, .wr_valid_i(valid_i), .wr_ready_o(desc_wr_ready), .wr_data_i(desc_in),
     .rd_valid_o(desc_valid), .rd_ready_i(sp_valid), .rd_data_o(desc));
-`ifndef SYNTHESIS
+`ifdef FORMAL
+  // The same promise, asserted (Yosys's formal front end has no $fatal in an always block).
+  always @(*) if (rst_ni) begin
+    if (valid_i) assert(desc_wr_ready);
+    if (sp_valid) assert(desc_valid);
+  end
+`elsif SYNTHESIS
+  wire unused_fifo = ^{desc_wr_ready, desc_valid};
+`else
   // The FIFO never fills (it holds at most Ls items) and always has the item the sphere unit
   // delivers. Checked only out of reset: at an edge inside the reset the registers still hold
   // their power-up values (live_q included), which an X-seeded simulation makes random.
@@ -225,8 +233,6 @@ module rpu_surface_setup #(
         $fatal(1, "rpu_surface_setup: descriptor FIFO empty at the sphere unit's output");
     end
   end
-`else
-  wire unused_fifo = ^{desc_wr_ready, desc_valid};
 `endif
 
   // =============================================================================================

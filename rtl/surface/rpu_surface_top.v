@@ -50,6 +50,9 @@ module rpu_surface_top #(
   parameter integer EdgeFrac = 16,  // FE: fraction bits of the camera axis W (8..40)
 `include "rpu_surface_ip_params.vh"
   parameter integer Unrolled = 0,   // 1: P pass units, 0: one pass unit used P times
+  parameter integer Admit    = 1,   // iterative form: 1 admits here; 0: the caller admits with
+                                    // an rpu_surface_admit of this Period and Returns at any
+                                    // fixed distance ahead (rpu_top), ready_o is 1
   parameter integer TagW     = 1,   // side-band bits carried with each item (>= 1)
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
@@ -123,7 +126,7 @@ module rpu_surface_top #(
 
   // ---- admission ----
   generate
-    if (Unrolled != 0) begin : g_admit_all
+    if (Unrolled != 0 || Admit == 0) begin : g_admit_all
       assign ready_o = 1'b1;
     end else begin : g_admit_ring
       rpu_surface_admit #(.Period(L), .Returns(P - 1)) u_admit (
@@ -173,9 +176,16 @@ module rpu_surface_top #(
     .ctx_i({su_tag, su_a, su_ab, su_pieces, su_ovf, su_piece_valid}),
     .valid_o(ip_valid), .hit_o(ip_hit), .tau_o(ip_tau), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
 
-`ifndef SYNTHESIS
   // The admission's promise: every item the setup delivers finds the IP ready and its indicator
-  // fields at the FIFO's head; the FIFO never fills.
+  // fields at the FIFO's head; the FIFO never fills. Simulation stops on a broken promise; the
+  // formal proofs assert it (Yosys's formal front end has no $fatal in an always block).
+`ifdef FORMAL
+  always @(*) begin
+    if (rst_ni && su_valid) assert(ip_ready && df_rd_valid);
+    if (rst_ni && accept) assert(df_wr_ready);
+  end
+`elsif SYNTHESIS
+`else
   always @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni && su_valid && (!ip_ready || !df_rd_valid))
       $fatal(1, "rpu_surface_top: an item reached the IP without a ring slot or descriptor");

@@ -1,21 +1,31 @@
-// rpu_top: the ray-processing unit for spatial curves and vector textures. Twins, per work item:
-// rpu::ref::process_curve_pair (curve segment) or ray_plane_unit + texture_unit (texture
-// segment); per pixel: rpu::ref::Resolve.
-//   descriptors: the camera (cam_we_i) and up to 2^SegAddrW segment descriptors (seg_we_i) are
-//     written before a frame (formats: docs/fixed-point.md, packing: docs/rtl.md); a
-//     descriptor's top bit says texture (1) or curve (0);
-//   work items: (id, pixel i, j, segment, last) on a valid/ready stream, one per cycle; `last`
-//     marks a pixel's last work item (items of one pixel are consecutive);
-//   results: (id, i, j, segment, last, texture, primitive, pred_1, hit, depth, τ_K, t, X,
-//     overflow) on a valid/ready stream, in input order;
+// rpu_top: the ray-processing unit for spatial curves, vector textures and vector-described
+// surfaces. Twins, per work item: rpu::ref::process_curve_pair (curve segment), ray_plane_unit +
+// texture_unit (texture segment) or process_surface_piece (surface piece); per pixel:
+// rpu::ref::Resolve.
+//   descriptors: the camera (cam_we_i), up to 2^SegAddrW segment descriptors (seg_we_i) and up
+//     to 2^SurfAddrW surface descriptors (surf_we_i) are written before a frame (formats:
+//     docs/fixed-point.md, packing: docs/rtl.md); a segment descriptor's top bit says texture
+//     (1) or curve (0);
+//   work items: (id, pixel i, j, segment, last, surface, piece) on a valid/ready stream, one per
+//     cycle; `last` marks a pixel's last work item (items of one pixel are consecutive); with
+//     `surface` set the item is piece `piece` of the surface at address `segment` of the
+//     surface RAM (the host issues every piece of each (pixel, surface) pair);
+//   results: (id, i, j, segment, last, surface, piece, texture, pieces, primitive, pred_1, hit,
+//     depth, τ_K, t, X, overflow) on a valid/ready stream, in input order (a surface piece:
+//     pred_1 is the piece's valid bit, t is 0, X the hit point);
 //   pixels: (i, j, hit, depth, primitive) on a valid/ready stream, one per pixel, from
 //     rpu_resolve fed by the result stream (a result is handed over only when both take it).
-// Inside: segment RAM read → rpu_ray_gen → curve: rpu_sphere → rpu_ip → rpu_capture → curve
-// FIFO; texture: rpu_ray_plane → rpu_texture → texture FIFO. An order FIFO of one bit per item
-// merges the two in input order; the merged stream feeds the result port and rpu_resolve.
-// The arithmetic pipelines never stall: a work item is only accepted while fewer than
-// 2^FifoLog2 items are in flight or waiting in the output FIFOs (a credit count of registers),
-// so no FIFO can overflow and no combinational ready path crosses the pipeline.
+// Inside: input skid register → segment RAM read → rpu_ray_gen → curve: rpu_sphere → rpu_ip →
+// rpu_capture → curve FIFO; texture: rpu_ray_plane → rpu_texture → texture FIFO; surface:
+// surface RAM read → rpu_surface_top (its iterative search ring) → surface FIFO. An order FIFO
+// of two bits per item (the kind) merges the three in input order; the merged stream feeds the
+// result port and rpu_resolve, which orders the hits of all kinds by the one depth format.
+// The arithmetic pipelines never stall: a work item is only taken from the input register while
+// fewer than 2^FifoLog2 items are in flight or waiting in the output FIFOs (a credit count of
+// registers) and, for a surface piece, while the search ring has a slot for it when it arrives
+// (rpu_surface_admit here mirrors the ring's occupancy at a fixed distance ahead of it), so no
+// FIFO can overflow and no combinational ready path crosses the pipeline; item_ready_o is the
+// input skid register's own flip-flop.
 `default_nettype none
 `include "rpu_widths.vh"
 
@@ -36,6 +46,13 @@ module rpu_top #(
   parameter integer IdW      = 32,  // width of the caller's work-item id (1..64)
   parameter integer PrimW    = 16,  // primitive id width (1..31)
   parameter integer FifoLog2 = 10,  // log2 of the items in flight + waiting (2..12)
+  // Surfaces (the surface path, rpu_surface_top, always in its iterative form).
+  parameter integer SurfW    = 24,  // LW: signed width of surface-local coordinates (16..36)
+  parameter integer AngleW   = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
+  parameter integer Turns    = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
+  parameter integer N1First  = 7,   // bits of the search's step 1 (0: N1; 1..10, at most N used)
+  parameter integer Indicators = 1, // indicators of the search's pass unit (1..64; 0: 2^N1 − 1)
+  parameter integer SurfAddrW = 4,  // log2 of the surface descriptor capacity (1..SegAddrW)
   // Derived (do not override): the port widths; the layouts themselves are in
   // rpu_cam_desc.vh and rpu_seg_desc.vh, which check these totals.
   parameter integer TW     = `RPU_TW(TFrac),
@@ -45,6 +62,8 @@ module rpu_top #(
                            + InvW + 7 + 2 * (2 + `RPU_HW(CoordW) + CoordW + TFrac
                                              + 3 * `RPU_UW(UnitFrac))
                            + `RPU_FRDW + 2 * `RPU_FGDW,
+  parameter integer SurfDW = PrimW + 6 * CoordW + `RPU_R2W(CoordW) + 9 * (SurfW + 2) + 7
+                           + 2 * SurfW + AngleW + 2 * (SurfW + 2) + `RPU_SDW(SurfW),
   parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)
 ) (
   input  wire                clk_i,
@@ -57,6 +76,10 @@ module rpu_top #(
   input  wire [SegW-1:0]     seg_data_i,   // {tex, prim, p1, d, c0, R2 | w0_2, L2, inv_m, inv_s,
                                            //  g1, g2}; a texture's R2 holds w0_2, its c0 bit 0
                                            //  the join (1: round)
+  input  wire                 surf_we_i,
+  input  wire [SurfAddrW-1:0] surf_addr_i,
+  input  wire [SurfDW-1:0]    surf_data_i, // {prim, c0, R2, origin, M, M's shift, y_min, y_max,
+                                           //  end angle, end cos, end sin, indicator word}
   // Work items.
   input  wire                item_valid_i,
   output wire                item_ready_o,
@@ -65,6 +88,8 @@ module rpu_top #(
   input  wire [IdxW-1:0]     item_j_i,
   input  wire [SegAddrW-1:0] item_seg_i,
   input  wire                item_last_i,  // the last work item of its pixel
+  input  wire                item_surf_i,  // a surface piece: item_seg_i addresses the surface RAM
+  input  wire [1:0]          item_piece_i, // the piece (surfaces), 0..2
   // Results.
   output wire                res_valid_o,
   input  wire                res_ready_i,
@@ -73,7 +98,10 @@ module rpu_top #(
   output wire [IdxW-1:0]     res_j_o,
   output wire [SegAddrW-1:0] res_seg_o,
   output wire                res_last_o,
+  output wire                res_surf_o,   // a surface piece (pred_1: the piece exists)
+  output wire [1:0]          res_piece_o,
   output wire                res_tex_o,    // a texture item (pred_1: the ray meets the plane)
+  output wire [1:0]          res_pieces_o, // a surface pair's non-empty pieces (0 otherwise)
   output wire [PrimW-1:0]    res_prim_o,
   output wire                res_pred1_o,
   output wire                res_hit_o,
@@ -99,22 +127,39 @@ module rpu_top #(
 `include "rpu_seg_desc.vh"
 `include "rpu_cam_desc.vh"
 `include "rpu_top_words.vh"
+`include "rpu_surf_desc.vh"
+`include "rpu_mul_latency.vh"
+`include "rpu_surface_latency.vh"
+  // The search ring of the surface path: its period and the passes of an item (the top's proof
+  // abstracts the surface unit, and its admission with it, to a ring of 3 cycles and 3 passes;
+  // rpu_surface_admit has its own proof at any period).
+`ifdef RPU_FORMAL_TOP
+  localparam integer SfPeriod = 3;
+  localparam integer SfPasses = 3;
+`else
+  localparam integer SfPeriod = rpu_surface_pass_latency(SurfW, AngleW, N);
+  localparam integer SfPasses = rpu_surface_passes(N, N1, N1First, Indicators);
+`endif
 
   initial begin
     if (SegAddrW < 1 || SegAddrW > 16) $fatal(1, "rpu_top: SegAddrW must be in 1..16");
     if (IdxW < 1 || IdxW > 14) $fatal(1, "rpu_top: IdxW must be in 1..14");
     if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_top: FifoLog2 must be in 2..12");
     if (PrimW < 1 || PrimW > 31) $fatal(1, "rpu_top: PrimW must be in 1..31");
-    if (SegW != SegWords || CamW != CamWords)
-      $fatal(1, "rpu_top: SegW/CamW are derived; do not override them");
+    if (SurfAddrW < 1 || SurfAddrW > SegAddrW)
+      $fatal(1, "rpu_top: SurfAddrW must be in 1..SegAddrW");
+    if (SegW != SegWords || CamW != CamWords || SurfDW != SfWords)
+      $fatal(1, "rpu_top: SegW/CamW/SurfDW are derived; do not override them");
   end
 
   // ---- descriptor storage ----
   reg [CamW-1:0] cam_q;
   reg [SegW-1:0] seg_mem [0:(1<<SegAddrW)-1];
+  reg [SurfDW-1:0] surf_mem [0:(1<<SurfAddrW)-1];
   always @(posedge clk_i) begin
     if (cam_we_i) cam_q <= cam_data_i;
     if (seg_we_i) seg_mem[seg_addr_i] <= seg_data_i;
+    if (surf_we_i) surf_mem[surf_addr_i] <= surf_data_i;
   end
   wire [CamVW-1:0]   cam_v0  = cam_q[CamV0O +: CamVW];
   wire [CamVW-1:0]   cam_dx  = cam_q[CamDxO +: CamVW];
@@ -125,16 +170,32 @@ module rpu_top #(
   wire [CamEW-1:0]   cam_w   = cam_q[CamWO +: CamEW];
   wire [CamEyeW-1:0] cam_eye = cam_q[CamEyeO +: CamEyeW];
 
-  // ---- admission: credits for every item in flight or waiting in the output FIFO ----
+  // ---- input: a skid register, so item_ready_o is a flip-flop ----
+  wire           in_valid, in_ready;
+  wire [ItW-1:0] in_item;
+  rpu_skid #(.W(ItW)) u_in (
+    .clk_i, .rst_ni, .valid_i(item_valid_i), .ready_o(item_ready_o),
+    .data_i({item_piece_i, item_surf_i, item_last_i, item_id_i, item_i_i, item_j_i, item_seg_i}),
+    .valid_o(in_valid), .ready_i(in_ready), .data_o(in_item));
+  wire in_surf = in_item[ItSurfO];
+
+  // ---- admission: credits for every item in flight or waiting in an output FIFO, and a slot of
+  // the surface search ring for a surface piece ----
   localparam integer Depth = 1 << FifoLog2;
   reg  [FifoLog2:0] used_q;
-  wire              accept = item_valid_i && item_ready_o;
+  wire              credit = used_q < Depth[FifoLog2:0];
+  wire              ring_ready;
+  wire              accept = in_valid && in_ready;
   wire              pop    = res_valid_o && res_ready_i;
-  assign item_ready_o = used_q < Depth[FifoLog2:0];
+  assign in_ready = credit && (!in_surf || ring_ready);
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) used_q <= {(FifoLog2+1){1'b0}};
     else         used_q <= used_q + {{FifoLog2{1'b0}}, accept} - {{FifoLog2{1'b0}}, pop};
   end
+  // The ring's occupancy, mirrored here at the fixed distance (stage 0, the ray generator, the
+  // surface RAM read, the setup) ahead of the ring (rpu_surface_admit: any fixed distance).
+  rpu_surface_admit #(.Period(SfPeriod), .Returns(SfPasses - 1)) u_ring_admit (
+    .clk_i, .rst_ni, .valid_i(in_valid && in_surf && credit), .ready_o(ring_ready));
 
   // ---- stage 0: read the segment descriptor ----
   reg             v0_q;
@@ -145,8 +206,8 @@ module rpu_top #(
     else         v0_q <= accept;
   end
   always @(posedge clk_i) begin
-    item_q <= {item_last_i, item_id_i, item_i_i, item_j_i, item_seg_i};
-    seg_q  <= seg_mem[item_seg_i];
+    item_q <= in_item;
+    seg_q  <= seg_mem[in_item[ItSegO +: SegAddrW]];
   end
 
   // ---- ray generator; the item and its descriptor ride along ----
@@ -181,7 +242,9 @@ module rpu_top #(
   // Segment descriptor fields (rpu_seg_desc.vh).
   wire [SegW-1:0]     sd      = rg_tag[0 +: SegW];
   wire [ItW-1:0]      rg_it   = rg_tag[SegW +: ItW];
-  wire                sd_tex  = sd[SegTexO];
+  wire                rg_surf = rg_it[ItSurfO];
+  wire [ItBW-1:0]     rg_itb  = rg_it[0 +: ItBW];          // what the curve and texture paths carry
+  wire                sd_tex  = sd[SegTexO] && !rg_surf;
   wire [PrimW-1:0]    sd_prim = sd[SegPrimO +: SegPrimW];
   wire [SegP1W-1:0]   sd_p1   = sd[SegP1O +: SegP1W];
   wire [SegDW-1:0]    sd_d    = sd[SegDO +: SegDW];
@@ -204,10 +267,10 @@ module rpu_top #(
   wire [SphTagW-1:0] sp_tag;
   rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
                .TagW(SphTagW)) u_sphere (
-    .clk_i, .rst_ni, .valid_i(rg_valid && !sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
+    .clk_i, .rst_ni, .valid_i(rg_valid && !rg_surf && !sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
     .c0_i(sd_c0),
     .r2_i(sd_r2), .p1_i(sd_p1), .d_i(sd_d), .inv_m_i(sd_invm), .inv_s_i(sd_invs),
-    .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_g, sd_fr, sd_fg, rg_edges}),
+    .tag_i({rg_itb, sd_prim, sd_p1, sd_d, sd_l2, sd_g, sd_fr, sd_fg, rg_edges}),
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
     .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
     .ovf_o(sp_ovf), .tag_o(sp_tag));
@@ -223,14 +286,14 @@ module rpu_top #(
     .d_i(sp_tag[SpDO +: SegDW]), .l2_i(sp_tag[SpL2O +: SegL2W]),
     .g1_i(sp_tag[SpGO + GdW +: GdW]), .g2_i(sp_tag[SpGO +: GdW]),
     .fr_i(sp_tag[SpFrO +: SegFrW]), .fg_i(sp_tag[SpFgO +: SegFgW]),
-    .ctx_i({sp_tag[SpItO +: ItW], sp_tag[SpPrimO +: PrimW], sp_pred1, sp_ovf,
+    .ctx_i({sp_tag[SpItO +: ItBW], sp_tag[SpPrimO +: PrimW], sp_pred1, sp_ovf,
             sp_tag[SpEdgesO +: EdgW]}),
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
   // The credit count keeps rpu_ip's own start FIFO (same depth) from ever filling: ready is 1.
   wire unused_md = ^ip_state[IsMdO +: 2 * MdW];
   wire unused_ip = ^{ip_ready_unused, sp_tc_unused, sp_hc_unused, sp_b_unused, rg_v_unused};
 
-  wire [ItW-1:0]   i_it    = ip_ctx[IcItO +: ItW];
+  wire [ItBW-1:0]  i_it    = ip_ctx[IcItO +: ItBW];
   wire [PrimW-1:0] i_prim  = ip_ctx[IcPrimO +: PrimW];
   wire             i_pred1 = ip_ctx[IcPred1O];
   wire             i_sovf  = ip_ctx[IcOvfO];
@@ -268,7 +331,7 @@ module rpu_top #(
   rpu_ray_plane #(.CoordW(CoordW), .DirFrac(DirFrac), .EdgeFrac(EdgeFrac),
                   .TagW(RpTagW)) u_ray_plane (
     .clk_i, .rst_ni, .valid_i(rg_valid && sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
-    .w_i(cam_w), .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2,
+    .w_i(cam_w), .tag_i({rg_itb, sd_prim, sd_p1, sd_d, sd_l2, sd_invm, sd_invs, sd_g, sd_r2,
                          sd_c0[0]}),
     .valid_o(rp_valid), .p0_valid_o(rp_p0_valid), .p0_o(rp_p0), .depth_o(rp_depth),
     .tag_o(rp_tag));
@@ -284,48 +347,127 @@ module rpu_top #(
     .inv_m_i(rp_tag[RpInvMO +: SegInvMW]), .inv_s_i(rp_tag[RpInvSO +: SegInvSW]),
     .g1_i(rp_tag[RpGO + GdW +: GdW]), .g2_i(rp_tag[RpGO +: GdW]),
     .w0_2_i(rp_tag[RpW02O +: SegR2W]), .round_join_i(rp_tag[RpJoinO]),
-    .tag_i({rp_tag[RpItO +: ItW], rp_tag[RpPrimO +: PrimW], rp_p0_valid, rp_depth}),
+    .tag_i({rp_tag[RpItO +: ItBW], rp_tag[RpPrimO +: PrimW], rp_p0_valid, rp_depth}),
     .valid_o(tx_valid), .pr1_o(tx_pr1_unused), .pr2_o(tx_pr2_unused), .pr3_o(tx_pr3_unused),
     .covers_o(tx_covers), .t_o(tx_t), .x_o(tx_x), .ovf_o(tx_ovf), .tag_o(tx_tag));
   wire unused_tx = ^{tx_pr1_unused, tx_pr2_unused, tx_pr3_unused};
-  wire [ItW-1:0]    tx_it    = tx_tag[TtItO +: ItW];
+  wire [ItBW-1:0]   tx_it    = tx_tag[TtItO +: ItBW];
   wire [PrimW-1:0]  tx_prim  = tx_tag[TtPrimO +: PrimW];
   wire              tx_p0ok  = tx_tag[TtP0OkO];
   wire [DepthW-1:0] tx_depth = tx_tag[TtDepthO +: DepthW];
 
-  // ---- output FIFOs: curve and texture results, merged in input order ----
-  // Result record: {item, texture, primitive, pred_1, ovf, τ, t, X, hit, depth}.
-  wire [ResW-1:0] cres = {cp_tag[CtItO +: ItW], 1'b0, cp_tag[0 +: RsCtxW],
+  // ---- surface path: the descriptor read beside the ray, then rpu_surface_top ----
+  reg                sf_v_q;
+  reg [ItW-1:0]      sf_it_q;
+  reg [3*(2+DirFrac)-1:0] sf_vhat_q;
+  reg [SurfDW-1:0]   sf_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) sf_v_q <= 1'b0;
+    else         sf_v_q <= rg_valid && rg_surf;
+  end
+  always @(posedge clk_i) begin
+    sf_it_q   <= rg_it;
+    sf_vhat_q <= rg_vhat;
+    sf_q      <= surf_mem[rg_it[ItSegO +: SurfAddrW]];
+  end
+  wire             sf_valid, sf_ready_unused, sf_pv, sf_hit, sf_ovf;
+  wire [1:0]       sf_pcs;
+  wire [N-1:0]     sf_tau;
+  wire [3*CoordW-1:0] sf_x;
+  wire [DepthW-1:0] sf_depth;
+  wire [ItW+PrimW-1:0] sf_tag;
+`ifdef RPU_FORMAL_TOP
+  // The top's proof (scripts/formal.sh) abstracts the surface unit as what rpu_top relies on: a
+  // pipe of fixed latency (here 4) that returns every item's tag in order, one result per item
+  // (tb_rpu_surface_top checks the unit's own latency and order, its admission assertions the
+  // ring's slots). Its datapath outputs are cut from that proof anyway.
+  localparam integer SfAbsL = 4;
+  localparam integer SfTagW = ItW + PrimW;
+  reg [SfAbsL-1:0]        sfa_v_q;
+  reg [SfAbsL*SfTagW-1:0] sfa_t_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) sfa_v_q <= {SfAbsL{1'b0}};
+    else         sfa_v_q <= {sfa_v_q[SfAbsL-2:0], sf_v_q};
+  end
+  always @(posedge clk_i) sfa_t_q <= {sfa_t_q[0 +: (SfAbsL-1)*SfTagW], sf_it_q, sf_q[SfPrimO +: PrimW]};
+  assign sf_valid = sfa_v_q[SfAbsL-1];
+  assign sf_tag   = sfa_t_q[(SfAbsL-1)*SfTagW +: SfTagW];
+  assign {sf_ready_unused, sf_pv, sf_hit, sf_ovf, sf_pcs, sf_tau, sf_x, sf_depth} =
+      {(6 + N + 3*CoordW + DepthW){1'b0}};
+  wire unused_sf_abs = ^{sf_vhat_q, sf_q};
+`else
+  rpu_surface_top #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
+                    .SqrtW(SqrtW), .EdgeFrac(EdgeFrac), .SurfW(SurfW), .AngleW(AngleW),
+                    .Turns(Turns), .N(N), .N1(N1), .N1First(N1First), .Indicators(Indicators),
+                    .Unrolled(0), .Admit(0), .TagW(ItW + PrimW)) u_surface (
+    .clk_i, .rst_ni, .eye_i(cam_eye), .w_i(cam_w), .valid_i(sf_v_q), .ready_o(sf_ready_unused),
+    .vhat_i(sf_vhat_q), .bound_c0_i(sf_q[SfC0O +: 3*CoordW]), .bound_r2_i(sf_q[SfR2O +: SfR2W]),
+    .origin_i(sf_q[SfOriginO +: 3*CoordW]), .to_local_i(sf_q[SfToLocO +: 9*SfMantW]),
+    .to_local_s_i(sf_q[SfToLocSO +: 7]), .y_min_i(sf_q[SfYMinO +: SurfW]),
+    .y_max_i(sf_q[SfYMaxO +: SurfW]), .end_angle_i(sf_q[SfEndAngO +: AngleW]),
+    .end_cos_i(sf_q[SfEndCosO +: SfConstW]), .end_sin_i(sf_q[SfEndSinO +: SfConstW]),
+    .desc_i(sf_q[SfDescO +: SfDescW]), .piece_i(sf_it_q[ItPcO +: 2]),
+    .tag_i({sf_it_q, sf_q[SfPrimO +: PrimW]}),
+    .valid_o(sf_valid), .piece_valid_o(sf_pv), .hit_o(sf_hit), .ovf_o(sf_ovf),
+    .pieces_o(sf_pcs), .tau_o(sf_tau), .x_o(sf_x), .depth_o(sf_depth), .tag_o(sf_tag));
+`endif
+  // X in the result's width (the curve point's): each component sign-extended.
+  wire [3*XW-1:0] sf_xw;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : g_sf_x
+      wire [CoordW-1:0] xc = sf_x[c*CoordW +: CoordW];
+      assign sf_xw[c*XW +: XW] = {{(XW-CoordW){xc[CoordW-1]}}, xc};
+    end
+  endgenerate
+
+  // ---- output FIFOs: curve, texture and surface results, merged in input order ----
+  // Result record: {item, texture, pieces, primitive, pred_1, ovf, τ, t, X, hit, depth}.
+  // A curve's or texture's item word: piece 0, not a surface.
+  wire [ResW-1:0] cres = {3'b000, cp_tag[CtItO +: ItBW], 1'b0, 2'b00, cp_tag[0 +: RsCtxW],
                           c_pred1 & cp_hit, c_pred1 ? cp_depth : {DepthW{1'b0}}};
   // As the model: a ray that misses the plane (or leaves the range) tests nothing: the result
   // is all zero; otherwise covers, t̂, X, the unit's overflow bit, and the ray/plane depth.
-  wire [ResW-1:0] tres = {tx_it, 1'b1, tx_prim, tx_p0ok, tx_p0ok & tx_ovf, {N{1'b0}},
+  wire [ResW-1:0] tres = {3'b000, tx_it, 1'b1, 2'b00, tx_prim, tx_p0ok, tx_p0ok & tx_ovf, {N{1'b0}},
                         tx_p0ok ? tx_t : {TW{1'b0}}, tx_p0ok ? tx_x : {3*XW{1'b0}},
                         tx_p0ok & tx_covers, tx_depth};
+  // As the model: τ, X and depth are 0 without a hit (rpu_surface_top zeroes them), t is 0.
+  wire [ResW-1:0] sres = {sf_tag[PrimW +: ItW], 1'b0, sf_pcs, sf_tag[0 +: PrimW], sf_pv, sf_ovf,
+                          sf_tau, {TW{1'b0}}, sf_xw, sf_hit, sf_depth};
 
-  // Three FIFOs in block RAM (rpu_fifo: registered read, data out of a register): curve
-  // results, texture results, and one bit per accepted item saying which of the two holds its
-  // result. The credit count bounds every FIFO's fill by Depth, so no write is ever refused.
-  wire              c_valid, tx_fifo_valid, o_valid, head_tex;
-  wire [ResW-1:0]   c_data, tx_data;
-  wire              c_wr_ready_unused, tx_wr_ready_unused, o_wr_ready_unused;
-  wire              head_valid = o_valid && (head_tex ? tx_fifo_valid : c_valid);
+  // Four FIFOs in block RAM (rpu_fifo: registered read, data out of a register): curve, texture
+  // and surface results, and two bits per accepted item saying which of the three holds its
+  // result (00 curve, 01 texture, 10 surface). The credit count bounds every FIFO's fill by
+  // Depth, so no write is ever refused.
+  wire              c_valid, tx_fifo_valid, sf_fifo_valid, o_valid;
+  wire [1:0]        head_kind;
+  wire              head_surf = head_kind[1];
+  wire              head_tex  = head_kind[0];
+  wire [ResW-1:0]   c_data, tx_data, sf_data;
+  wire              c_wr_ready_unused, tx_wr_ready_unused, sf_wr_ready_unused, o_wr_ready_unused;
+  wire              head_valid = o_valid && (head_surf ? sf_fifo_valid
+                                           : head_tex ? tx_fifo_valid : c_valid);
   wire              rs_ready;
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_curve_fifo (
     .clk_i, .rst_ni, .wr_valid_i(cp_valid), .wr_ready_o(c_wr_ready_unused), .wr_data_i(cres),
-    .rd_valid_o(c_valid), .rd_ready_i(pop && !head_tex), .rd_data_o(c_data));
+    .rd_valid_o(c_valid), .rd_ready_i(pop && !head_surf && !head_tex), .rd_data_o(c_data));
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_texture_fifo (
     .clk_i, .rst_ni, .wr_valid_i(tx_valid), .wr_ready_o(tx_wr_ready_unused), .wr_data_i(tres),
     .rd_valid_o(tx_fifo_valid), .rd_ready_i(pop && head_tex), .rd_data_o(tx_data));
-  rpu_fifo #(.Width(1), .Log2Depth(FifoLog2)) u_order_fifo (
+  rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_surface_fifo (
+    .clk_i, .rst_ni, .wr_valid_i(sf_valid), .wr_ready_o(sf_wr_ready_unused), .wr_data_i(sres),
+    .rd_valid_o(sf_fifo_valid), .rd_ready_i(pop && head_surf), .rd_data_o(sf_data));
+  rpu_fifo #(.Width(2), .Log2Depth(FifoLog2)) u_order_fifo (
     .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(o_wr_ready_unused),
-    .wr_data_i(seg_q[SegTexO]), .rd_valid_o(o_valid), .rd_ready_i(pop), .rd_data_o(head_tex));
-  wire unused_fifo = ^{c_wr_ready_unused, tx_wr_ready_unused, o_wr_ready_unused};
-  wire [ResW-1:0] head = head_tex ? tx_data : c_data;
+    .wr_data_i({item_q[ItSurfO], seg_q[SegTexO] && !item_q[ItSurfO]}), .rd_valid_o(o_valid),
+    .rd_ready_i(pop), .rd_data_o(head_kind));
+  wire unused_fifo = ^{c_wr_ready_unused, tx_wr_ready_unused, sf_wr_ready_unused,
+                       o_wr_ready_unused, sf_ready_unused};
+  wire [ResW-1:0] head = head_surf ? sf_data : head_tex ? tx_data : c_data;
   // A result leaves when the consumer and the pixel resolve both take it.
   assign res_valid_o = head_valid && rs_ready;
-  assign {res_last_o, res_id_o, res_i_o, res_j_o, res_seg_o, res_tex_o, res_prim_o, res_pred1_o,
-          res_ovf_o, res_tau_o, res_t_o, res_x_o, res_hit_o, res_depth_o} = head;
+  assign {res_piece_o, res_surf_o, res_last_o, res_id_o, res_i_o, res_j_o, res_seg_o, res_tex_o,
+          res_pieces_o, res_prim_o, res_pred1_o, res_ovf_o, res_tau_o, res_t_o, res_x_o,
+          res_hit_o, res_depth_o} = head;
 
   // ---- pixel resolve ----
   wire [2*IdxW-1:0] pix_ji;
@@ -347,27 +489,35 @@ module rpu_top #(
   always @(posedge clk_i) f_past_valid <= 1'b1;
   always @(*) if (!f_past_valid) assume(!rst_ni);
   reg [IdW-1:0]     f_acc_id, f_pop_id;   // items accepted / results delivered, mod 2^IdW
-  reg [FifoLog2+1:0] f_out;               // accepted − delivered (exact)
+  reg [FifoLog2+1:0] f_out;               // accepted at the port − delivered (exact)
+  reg [1:0]          f_in;                // accepted at the port − taken by stage 0 (exact)
+  wire f_port = item_valid_i && item_ready_o;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       f_acc_id <= {IdW{1'b0}};
       f_pop_id <= {IdW{1'b0}};
       f_out    <= {(FifoLog2+2){1'b0}};
+      f_in     <= 2'd0;
     end else begin
-      if (accept) f_acc_id <= f_acc_id + 1'b1;
+      if (f_port) f_acc_id <= f_acc_id + 1'b1;
       if (pop)    f_pop_id <= f_pop_id + 1'b1;
-      f_out <= f_out + {{(FifoLog2+1){1'b0}}, accept} - {{(FifoLog2+1){1'b0}}, pop};
+      f_out <= f_out + {{(FifoLog2+1){1'b0}}, f_port} - {{(FifoLog2+1){1'b0}}, pop};
+      f_in  <= f_in + {1'b0, f_port} - {1'b0, accept};
     end
   end
   always @(*) if (item_valid_i) assume(item_id_i == f_acc_id);
   always @(*) begin
     if (!rst_ni) assert(!res_valid_o && !pix_valid_o);
     if (rst_ni) begin
-      // The credit count is the number of items accepted and not delivered, never above 2^FifoLog2.
+      // The credit count is the number of items taken and not delivered, never above
+      // 2^FifoLog2; the input register holds the rest of those accepted (at most two).
       assert(used_q <= Depth[FifoLog2:0]);
-      assert({1'b0, used_q} == f_out);
-      // item_ready_o: exactly while a credit is free.
-      assert(item_ready_o == (f_out < Depth));
+      assert(f_in <= 2'd2);
+      assert({1'b0, used_q} + {{FifoLog2{1'b0}}, f_in} == f_out);
+      // item_ready_o: exactly while the input register's spill slot is free; an item waits
+      // there only while it cannot be taken.
+      assert(item_ready_o == (f_in != 2'd2));
+      assert(in_valid == (f_in != 2'd0));
       // No result without an accepted item; results in input order, each exactly once (the
       // result's id is the number of results delivered before it).
       if (res_valid_o) begin
@@ -381,22 +531,22 @@ module rpu_top #(
   (* anyseq *) wire f_pick;
   reg                f_track, f_done;
   reg [IdW-1:0]      f_t_id;
-  reg [2*IdxW+SegAddrW:0] f_t_tag;
+  reg [2*IdxW+SegAddrW+3:0] f_t_tag;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       f_track <= 1'b0;
       f_done  <= 1'b0;
-    end else if (accept && f_pick && !f_track && !f_done) begin
+    end else if (f_port && f_pick && !f_track && !f_done) begin
       f_track <= 1'b1;
       f_t_id  <= item_id_i;
-      f_t_tag <= {item_last_i, item_i_i, item_j_i, item_seg_i};
+      f_t_tag <= {item_piece_i, item_surf_i, item_last_i, item_i_i, item_j_i, item_seg_i};
     end else if (f_track && pop && res_id_o == f_t_id) begin
       f_track <= 1'b0;
       f_done  <= 1'b1;
     end
   end
   always @(*) if (rst_ni && f_track && res_valid_o && res_id_o == f_t_id)
-    assert({res_last_o, res_i_o, res_j_o, res_seg_o} == f_t_tag);
+    assert({res_piece_o, res_surf_o, res_last_o, res_i_o, res_j_o, res_seg_o} == f_t_tag);
   always @(posedge clk_i) begin
     if (f_past_valid && $past(rst_ni) && rst_ni) begin
       // AXI-Stream: a result, or a pixel, stays valid with the same tags until taken.
@@ -404,7 +554,8 @@ module rpu_top #(
         assert(res_valid_o);
         assert(res_id_o == $past(res_id_o) && res_last_o == $past(res_last_o) &&
                res_i_o == $past(res_i_o) && res_j_o == $past(res_j_o) &&
-               res_seg_o == $past(res_seg_o) && res_tex_o == $past(res_tex_o));
+               res_seg_o == $past(res_seg_o) && res_tex_o == $past(res_tex_o) &&
+               res_surf_o == $past(res_surf_o) && res_piece_o == $past(res_piece_o));
       end
       if ($past(pix_valid_o && !pix_ready_i)) begin
         assert(pix_valid_o);

@@ -3,13 +3,17 @@
 // pipelines, and the result record. Included inside rpu_top after rpu_guide_desc.vh,
 // rpu_seg_desc.vh and rpu_cam_desc.vh.
 
-  // The work item as accepted: {last, id, i, j, seg}.
+  // The work item as accepted: {piece, surface, last, id, i, j, seg}.
   localparam integer ItSegO  = 0;
   localparam integer ItJO    = ItSegO + SegAddrW;          // pixel row j
   localparam integer ItIO    = ItJO + IdxW;                // pixel column i
   localparam integer ItIdO   = ItIO + IdxW;                // the caller's id
   localparam integer ItLastO = ItIdO + IdW;                // the pixel's last item
-  localparam integer ItW     = ItLastO + 1;
+  localparam integer ItSurfO = ItLastO + 1;                // 1: a surface piece (seg: surface RAM)
+  localparam integer ItPcO   = ItSurfO + 1;                // the piece, 0..2 (surfaces)
+  localparam integer ItW     = ItPcO + 2;
+  localparam integer ItBW    = ItSurfO;                    // {last, id, i, j, seg}: what the
+                                                           //   curve and texture paths carry
 
   // The pixel's four PVP edge vectors, each 3 × Q(4.FE+14): {left, right, top, bottom}.
   localparam integer EdBottomO = 0;
@@ -28,7 +32,7 @@
   localparam integer SpP1O    = SpDO + SegDW;
   localparam integer SpPrimO  = SpP1O + SegP1W;
   localparam integer SpItO    = SpPrimO + PrimW;
-  localparam integer SphTagW  = SpItO + ItW;
+  localparam integer SphTagW  = SpItO + ItBW;
 
   // Beside the K-step process: {item, prim, pred_1, sphere overflow, edges}.
   localparam integer IcEdgesO = 0;
@@ -36,7 +40,7 @@
   localparam integer IcPred1O = IcOvfO + 1;
   localparam integer IcPrimO  = IcPred1O + 1;
   localparam integer IcItO    = IcPrimO + PrimW;
-  localparam integer IpCtxW   = IcItO + ItW;
+  localparam integer IpCtxW   = IcItO + ItBW;
 
   // rpu_ip's state output: {τ_K, t, X, md_lo, md_hi}.
   localparam integer IsMdO    = 0;
@@ -54,7 +58,7 @@
   localparam integer CtPred1O = CtOvfO + 1;
   localparam integer CtPrimO  = CtPred1O + 1;
   localparam integer CtItO    = CtPrimO + PrimW;
-  localparam integer CapTagW  = CtItO + ItW;
+  localparam integer CapTagW  = CtItO + ItBW;
 
   // Beside the ray/plane unit: {item, prim, p1, d, L², inv_m, inv_s, g1, g2, w0², round join}.
   localparam integer RpJoinO  = 0;                         // 1: round join (c0's bit 0)
@@ -67,21 +71,22 @@
   localparam integer RpP1O    = RpDO + SegDW;
   localparam integer RpPrimO  = RpP1O + SegP1W;
   localparam integer RpItO    = RpPrimO + PrimW;
-  localparam integer RpTagW   = RpItO + ItW;
+  localparam integer RpTagW   = RpItO + ItBW;
 
   // Beside the texture unit: {item, prim, p0 valid, depth}.
   localparam integer TtDepthO = 0;
   localparam integer TtP0OkO  = TtDepthO + DepthW;
   localparam integer TtPrimO  = TtP0OkO + 1;
   localparam integer TtItO    = TtPrimO + PrimW;
-  localparam integer TxTagW   = TtItO + ItW;
+  localparam integer TxTagW   = TtItO + ItBW;
 
-  // A result record (the result port, the output FIFOs): {item, texture, prim, pred_1,
-  // overflow, τ, t, X, hit, depth}.
+  // A result record (the result port, the output FIFOs): {item, texture, pieces, prim, pred_1,
+  // overflow, τ, t, X, hit, depth}; pieces: a surface pair's non-empty pieces (0 otherwise).
   localparam integer RsDepthO = 0;
   localparam integer RsHitO   = RsDepthO + DepthW;
   localparam integer RsXO     = RsHitO + 1;                // {prim, pred_1, overflow, τ, t, X}
   localparam integer RsCtxW   = CtItO;                     //   as the capture side band holds it
-  localparam integer RsTexO   = RsXO + RsCtxW;
+  localparam integer RsPcsO   = RsXO + RsCtxW;
+  localparam integer RsTexO   = RsPcsO + 2;
   localparam integer RsItO    = RsTexO + 1;
   localparam integer ResW     = RsItO + ItW;

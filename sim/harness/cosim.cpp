@@ -14,6 +14,8 @@ void load(TopPorts& top, const FrameSchedule& f) {
   top.write_camera(f.camera);
   for (size_t k = 0; k < f.segments.size(); ++k)
     top.write_segment(static_cast<std::uint32_t>(k), f.segments[k]);
+  for (size_t k = 0; k < f.surfaces.size(); ++k)
+    top.write_surface(static_cast<std::uint32_t>(k), f.surfaces[k]);
   top.reset(4);
 }
 
@@ -23,10 +25,11 @@ CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
                        const CosimOptions& o) {
   CosimStats st;
   load(top, f);
-  st.load_cycles = 1 + f.segments.size();
+  st.load_cycles = 1 + f.segments.size() + f.surfaces.size();
   st.items = f.items.size();
   st.curve_items = f.curve_items;
   st.texture_items = f.texture_items;
+  st.surface_items = f.surface_items;
   std::mt19937_64 rng(o.seed);
   const auto pct = [&](int p) { return p >= 100 || static_cast<int>(rng() % 100) < p; };
   const std::uint64_t limit = o.max_cycles ? o.max_cycles : 100 * st.items + 100000;
@@ -79,12 +82,12 @@ bool trace_pixel(TopPorts& top, const FrameSchedule& f, const ref::ModelScene& m
   one.items.clear();
   one.expected.clear();
   one.expected_pixels.clear();
-  one.curve_items = one.texture_items = 0;
+  one.curve_items = one.texture_items = one.surface_items = 0;
   for (size_t k = 0; k < f.items.size(); ++k) {
     if (f.items[k].i != i || f.items[k].j != j) continue;
     one.items.push_back(f.items[k]);
     one.expected.push_back(f.expected[k]);
-    (f.items[k].texture ? one.texture_items : one.curve_items)++;
+    one.count(f.items[k]);
   }
   if (one.items.empty()) return false;
   for (const PixelResult& p : f.expected_pixels)

@@ -23,8 +23,9 @@ struct CosimOptions {
 
 struct CosimStats {
   std::uint64_t cycles = 0;          // reset released → last pixel taken
-  std::uint64_t load_cycles = 0;     // descriptor writes (camera + segments)
-  std::uint64_t items = 0, curve_items = 0, texture_items = 0, pixels = 0, hits = 0;
+  std::uint64_t load_cycles = 0;     // descriptor writes (camera, segments, surfaces)
+  std::uint64_t items = 0, curve_items = 0, texture_items = 0, surface_items = 0;
+  std::uint64_t pixels = 0, hits = 0;
   std::uint64_t latency_cycles = 0;  // first item accepted → its result on the port
   std::uint64_t stall_cycles = 0;    // an item offered but not accepted
   double sim_seconds = 0;            // wall time of the cycle loop

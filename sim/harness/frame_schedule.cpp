@@ -9,6 +9,7 @@
 #include "model/units.h"
 #include "scene/classification_grid.h"
 #include "scene/screen_bins.h"
+#include "surface_word.h"
 
 namespace rpu::sim {
 
@@ -77,6 +78,27 @@ Bits pack_segment(const ref::HwParams& p, const ref::SegmentDesc& s, bool textur
   return d.bits();
 }
 
+// A descriptor of the surface RAM in the layout of rtl/top/rpu_surf_desc.vh, most significant
+// field first.
+Bits pack_surface(const ref::HwParams& p, const ref::SurfaceDesc& s) {
+  const TopWidths w(p);
+  const int mw = p.surf_mant_w(), kf = p.surf_const_frac();
+  Concat d;
+  d.add(s.primitive, TopWidths::kPrimW);
+  d.add3(s.bound.c0.x, s.bound.c0.y, s.bound.c0.z, w.CW);
+  d.add(s.bound.R2, w.R2W);
+  d.add3(s.origin.x, s.origin.y, s.origin.z, w.CW);
+  for (int k = 8; k >= 0; --k) d.add(s.to_local[static_cast<size_t>(k)], mw);  // entry 0 lowest
+  d.add(s.to_local_s, 7);
+  d.add(s.y_min, p.surf_w);
+  d.add(s.y_max, p.surf_w);
+  d.add(static_cast<i128>(s.end_angle), p.angle_w);
+  d.add(s.end_cos, kf + 2);
+  d.add(s.end_sin, kf + 2);
+  add_surface_desc(d, p, s);
+  return d.bits();
+}
+
 FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelScene& m,
                              const ref::RefOptions& o) {
   const ref::HwParams& p = m.params;
@@ -86,6 +108,10 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
     throw Error(m.source, fmt::format("{} segments, but rpu_top's segment RAM holds {} "
                                       "(SegAddrW {})", nseg, 1 << TopWidths::kSegAddrW,
                                       TopWidths::kSegAddrW));
+  if (m.surfaces.size() > (std::size_t{1} << TopWidths::kSurfAddrW))
+    throw Error(m.source, fmt::format("{} surfaces, but rpu_top's surface RAM holds {} "
+                                      "(SurfAddrW {})", m.surfaces.size(),
+                                      1 << TopWidths::kSurfAddrW, TopWidths::kSurfAddrW));
   if (cam.width > (1 << TopWidths::kIdxW) || cam.height > (1 << TopWidths::kIdxW))
     throw Error(m.source, fmt::format("image {}x{} exceeds rpu_top's pixel index range {}",
                                       cam.width, cam.height, 1 << TopWidths::kIdxW));
@@ -96,6 +122,7 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
   f.camera = pack_camera(p, cam);
   for (const auto& s : m.curve_segments) f.segments.push_back(pack_segment(p, s, false));
   for (const auto& s : m.texture_segments) f.segments.push_back(pack_segment(p, s, true));
+  for (const auto& s : m.surfaces) f.surfaces.push_back(pack_surface(p, s));
   const auto tex_base = static_cast<std::uint32_t>(m.curve_segments.size());
 
   const scene::ScreenBins bins(sc.camera, sc.curve_segments, 8, o.binning);
@@ -159,6 +186,34 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
             }
           }
         }
+        // Every piece of every surface, as render_ref (the host issues 1 or 3 per pair).
+        for (std::size_t k = 0; k < m->surfaces.size(); ++k) {
+          const ref::SurfaceDesc& s = m->surfaces[k];
+          const int pieces = ref::surface_piece_items(s.type);
+          for (int q = 0; q < pieces; ++q) {
+            const ref::SurfacePieceResult r =
+                ref::process_surface_piece(p, m->camera, ray.vhat, s, q);
+            ItemResult e;
+            e.surface = true;
+            e.seg = static_cast<std::uint32_t>(k);
+            e.piece = q;
+            e.pieces = r.pieces;
+            e.primitive = static_cast<std::uint32_t>(s.primitive);
+            e.pred1 = r.valid;
+            e.hit = r.hit;
+            e.overflow = r.overflow;
+            e.depth = r.depth;
+            e.tau = r.tau;
+            e.X[0] = r.X.x;
+            e.X[1] = r.X.y;
+            e.X[2] = r.X.z;
+            WorkItem it{0, i, j, e.seg, false, false};
+            it.surface = true;
+            it.piece = q;
+            row.items.push_back(it);
+            row.expected.push_back(e);
+          }
+        }
         if (row.items.size() > first) {
           row.items.back().last = true;
           row.expected.back().last = true;
@@ -176,7 +231,7 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
       it.id = e.id = id++;
       e.i = it.i;
       e.j = it.j;
-      (it.texture ? f.texture_items : f.curve_items)++;
+      f.count(it);
       f.items.push_back(it);
       f.expected.push_back(e);
     }
@@ -202,6 +257,24 @@ std::string explain_item(const ref::ModelScene& m, const WorkItem& item) {
   s += fmt::format("      edges: left {} right {} top {} bottom {}\n", vec(ray.e_left),
                    vec(ray.e_right), vec(ray.e_top), vec(ray.e_bottom));
   const auto ncurve = m.curve_segments.size();
+  if (item.surface) {
+    if (item.seg >= m.surfaces.size()) return s + "    (no such surface)\n";
+    const ref::SurfaceDesc& sd = m.surfaces[item.seg];
+    fixed::Overflow ovf;
+    const ref::SurfaceSetupOut su =
+        ref::surface_setup(p, m.camera.eye, ray.vhat, sd, item.piece, ovf);
+    s += fmt::format("    surface setup: valid {} pieces {} pred1 {} A {} B {} lA {} lB {} s {}..{} "
+                     "A' {} B'-A' {} ovf {}\n", su.valid ? 1 : 0, su.pieces,
+                     su.sphere.pred1 ? 1 : 0, vec(su.sphere.A), vec(su.sphere.B), vec(su.la),
+                     vec(su.lb), dec(su.s_lo), dec(su.s_hi), vec(su.A), vec(su.AB),
+                     ovf.flag ? 1 : 0);
+    if (!su.valid) return s + "    (no such piece: the search does not run)\n";
+    const ref::SurfacePieceResult r =
+        ref::process_surface_piece(p, m.camera, ray.vhat, sd, item.piece);
+    s += fmt::format("    search: hit {} tau {} X {} depth {} ovf {}\n", r.hit ? 1 : 0, r.tau,
+                     vec(r.X), dec(r.depth), r.overflow ? 1 : 0);
+    return s;
+  }
   if (item.seg < ncurve) {
     const ref::SegmentDesc& sd = m.curve_segments[item.seg];
     ref::Overflow ovf;

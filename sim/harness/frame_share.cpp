@@ -38,6 +38,7 @@ FrameSchedule share_schedule(const FrameSchedule& f, const FrameShare& s) {
   out.params = f.params;
   out.camera = f.camera;
   out.segments = f.segments;
+  out.surfaces = f.surfaces;
   out.width = f.width;
   out.height = f.height;
   const auto first = static_cast<std::ptrdiff_t>(s.first_item);
@@ -47,7 +48,7 @@ FrameSchedule share_schedule(const FrameSchedule& f, const FrameShare& s) {
     out.expected.assign(f.expected.begin() + first, f.expected.begin() + end);
   out.expected_pixels.assign(f.expected_pixels.begin() + static_cast<std::ptrdiff_t>(s.first_pixel),
                              f.expected_pixels.begin() + static_cast<std::ptrdiff_t>(s.end_pixel));
-  for (const WorkItem& it : out.items) (it.texture ? out.texture_items : out.curve_items)++;
+  for (const WorkItem& it : out.items) out.count(it);
   return out;
 }
 
@@ -69,11 +70,14 @@ std::uint64_t schedule_digest(const FrameSchedule& f) {
   bits(f.camera);
   mix(f.segments.size());
   for (const Bits& b : f.segments) bits(b);
+  mix(f.surfaces.size());
+  for (const Bits& b : f.surfaces) bits(b);
   mix(f.items.size());
   for (const WorkItem& it : f.items) {
     mix(it.id);
     mix(static_cast<std::uint64_t>(it.i) << 32 | static_cast<std::uint32_t>(it.j));
-    mix(static_cast<std::uint64_t>(it.seg) << 2 | (it.last ? 1u : 0u) | (it.texture ? 2u : 0u));
+    mix(static_cast<std::uint64_t>(it.seg) << 5 | static_cast<std::uint64_t>(it.piece) << 3 |
+        (it.surface ? 4u : 0u) | (it.last ? 1u : 0u) | (it.texture ? 2u : 0u));
   }
   return h;
 }

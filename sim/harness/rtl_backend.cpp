@@ -283,6 +283,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     st.items += s.items;
     st.curve_items += s.curve_items;
     st.texture_items += s.texture_items;
+    st.surface_items += s.surface_items;
     st.pixels += s.pixels;
     st.hits += s.hits;
     st.stall_cycles += s.stall_cycles;

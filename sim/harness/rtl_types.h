@@ -24,7 +24,8 @@ struct TopWidths {
   static constexpr int kIdxW = 14;      // pixel index
   static constexpr int kIdW = 32;       // work-item id
   static constexpr int kPrimW = 16;     // primitive id
-  int CW, DW, TW, UW, XW, HW, VgW, EgW, R2W, L2W, GdW, CamW, SegW, DepthW, N;
+  static constexpr int kSurfAddrW = 4;  // surface RAM: 16 descriptors
+  int CW, DW, TW, UW, XW, HW, VgW, EgW, R2W, L2W, GdW, CamW, SegW, SurfDW, DepthW, N;
   explicit TopWidths(const ref::HwParams& p);
 };
 
@@ -32,13 +33,16 @@ struct TopWidths {
 // default widths and n, n1 in the iterative form.
 ref::HwParams systemc_params();
 
-// One (pixel, segment) work item as rpu_top takes it.
+// One work item as rpu_top takes it: (pixel, segment) or (pixel, surface, piece).
 struct WorkItem {
   std::uint32_t id = 0;
   int i = 0, j = 0;
-  std::uint32_t seg = 0;  // segment RAM address
+  std::uint32_t seg = 0;  // segment RAM address, or surface RAM address (surface)
   bool last = false;      // the pixel's last item
   bool texture = false;   // (not a port: the descriptor's bit; kept for reports)
+  bool surface = false;   // a surface piece (item_surf_i)
+  int piece = 0;          // the piece, 0..2 (item_piece_i)
+  const char* kind() const { return surface ? "surface" : texture ? "texture" : "curve"; }
 };
 
 // One result record of rpu_top's result stream.
@@ -46,7 +50,8 @@ struct ItemResult {
   std::uint32_t id = 0;
   int i = 0, j = 0;
   std::uint32_t seg = 0;
-  bool last = false, texture = false;
+  bool last = false, texture = false, surface = false;
+  int piece = 0, pieces = 0;  // surfaces: the piece and the pair's non-empty pieces
   std::uint32_t primitive = 0;
   bool pred1 = false, hit = false, overflow = false;
   i128 depth = 0;

@@ -34,9 +34,10 @@ void Scoreboard::on_result(const ItemResult& a) {
                        a.describe()), e.i, e.j);
     return;
   }
-  report(fmt::format("MISMATCH: pixel ({},{}) work item {} ({} segment {}, primitive {})\n"
+  report(fmt::format("MISMATCH: pixel ({},{}) work item {} ({} {} {}, primitive {})\n"
                      "  expected {}\n  actual   {}\n  model stages:\n{}",
-                     e.i, e.j, e.id, item.texture ? "texture" : "curve", e.seg, e.primitive,
+                     e.i, e.j, e.id, item.kind(), item.surface ? "at" : "segment", e.seg,
+                     e.primitive,
                      e.describe(), a.describe(), explain_item(m_, item)),
          e.i, e.j);
 }

@@ -150,13 +150,16 @@ void write_job(const std::string& path, const FrameSchedule& f) {
   w.bits(f.camera);
   w.u32(static_cast<std::uint32_t>(f.segments.size()));
   for (const Bits& b : f.segments) w.bits(b);
+  w.u32(static_cast<std::uint32_t>(f.surfaces.size()));
+  for (const Bits& b : f.surfaces) w.bits(b);
   w.u32(static_cast<std::uint32_t>(f.items.size()));
   for (const WorkItem& it : f.items) {
     w.u32(it.id);
     w.u32(static_cast<std::uint32_t>(it.i));
     w.u32(static_cast<std::uint32_t>(it.j));
     w.u32(it.seg);
-    w.u32((it.last ? 1u : 0u) | (it.texture ? 2u : 0u));
+    w.u32((it.last ? 1u : 0u) | (it.texture ? 2u : 0u) | (it.surface ? 4u : 0u) |
+          static_cast<std::uint32_t>(it.piece) << 3);
   }
   w.u32(static_cast<std::uint32_t>(f.expected_pixels.size()));
   w.close();
@@ -172,6 +175,8 @@ FrameSchedule read_job(const std::string& path) {
   f.camera = r.bits();
   const std::uint32_t nseg = r.count(1u << 16);
   for (std::uint32_t k = 0; k < nseg; ++k) f.segments.push_back(r.bits());
+  const std::uint32_t nsurf = r.count(1u << 16);
+  for (std::uint32_t k = 0; k < nsurf; ++k) f.surfaces.push_back(r.bits());
   const std::uint32_t n = r.count(1u << 30);
   f.items.resize(n);
   for (WorkItem& it : f.items) {
@@ -182,7 +187,9 @@ FrameSchedule read_job(const std::string& path) {
     const std::uint32_t flags = r.u32();
     it.last = flags & 1u;
     it.texture = flags & 2u;
-    (it.texture ? f.texture_items : f.curve_items)++;
+    it.surface = flags & 4u;
+    it.piece = static_cast<int>(flags >> 3 & 3u);
+    f.count(it);
   }
   // The pixel count sizes the pixel stream (its values are not needed by the harness).
   f.expected_pixels.resize(r.count(1u << 30));
@@ -194,7 +201,8 @@ namespace {
 void put_streams(Writer& w, const StreamRecord& s) {
   const CosimStats& st = s.stats;
   for (std::uint64_t v : {st.cycles, st.load_cycles, st.items, st.curve_items, st.texture_items,
-                          st.pixels, st.hits, st.latency_cycles, st.stall_cycles})
+                          st.surface_items, st.pixels, st.hits, st.latency_cycles,
+                          st.stall_cycles})
     w.u64(v);
   w.f64(st.sim_seconds);
   w.u32(st.timed_out ? 1 : 0);
@@ -205,7 +213,8 @@ void put_streams(Writer& w, const StreamRecord& s) {
     w.u32(static_cast<std::uint32_t>(r.j));
     w.u32(r.seg);
     w.u32((r.last ? 1u : 0u) | (r.texture ? 2u : 0u) | (r.pred1 ? 4u : 0u) | (r.hit ? 8u : 0u) |
-          (r.overflow ? 16u : 0u));
+          (r.overflow ? 16u : 0u) | (r.surface ? 32u : 0u) |
+          static_cast<std::uint32_t>(r.piece) << 6 | static_cast<std::uint32_t>(r.pieces) << 8);
     w.u32(r.primitive);
     w.i128v(r.depth);
     w.u64(r.tau);
@@ -226,7 +235,7 @@ StreamRecord get_streams(Reader& r) {
   StreamRecord s;
   CosimStats& st = s.stats;
   for (std::uint64_t* v : {&st.cycles, &st.load_cycles, &st.items, &st.curve_items,
-                           &st.texture_items, &st.pixels, &st.hits, &st.latency_cycles,
+                           &st.texture_items, &st.surface_items, &st.pixels, &st.hits, &st.latency_cycles,
                            &st.stall_cycles})
     *v = r.u64();
   st.sim_seconds = r.f64();
@@ -243,6 +252,9 @@ StreamRecord get_streams(Reader& r) {
     x.pred1 = fl & 4u;
     x.hit = fl & 8u;
     x.overflow = fl & 16u;
+    x.surface = fl & 32u;
+    x.piece = static_cast<int>(fl >> 6 & 3u);
+    x.pieces = static_cast<int>(fl >> 8 & 3u);
     x.primitive = r.u32();
     x.depth = r.i128v();
     x.tau = r.u64();

@@ -37,6 +37,6 @@ inline Bits pack_surface_desc(const ref::HwParams& p, const ref::SurfaceDesc& s)
   return c.bits();
 }
 // The word's width, `RPU_SDW in rtl/common/rpu_widths.vh.
-inline int surface_desc_w(const ref::HwParams& p) { return 15 * p.surf_w + 61; }
+inline int surface_desc_w(const ref::HwParams& p) { return p.surf_desc_w(); }
 
 }  // namespace rpu::sim

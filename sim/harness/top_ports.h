@@ -17,6 +17,7 @@ class TopPorts {
   virtual void reset(int cycles) = 0;                      // rst_ni low for `cycles` clocks
   virtual void write_camera(const Bits& data) = 0;         // one clock with cam_we_i
   virtual void write_segment(std::uint32_t addr, const Bits& data) = 0;  // one clock, seg_we_i
+  virtual void write_surface(std::uint32_t addr, const Bits& data) = 0;  // one clock, surf_we_i
   // Sets the inputs for the coming clock edge (item == nullptr: item_valid_i = 0) and
   // evaluates, so the ready/valid outputs below are current.
   virtual void drive(const WorkItem* item, bool res_ready, bool pix_ready) = 0;

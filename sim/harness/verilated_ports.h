@@ -25,6 +25,7 @@ class VerilatedPorts final : public TopPorts {
     top_->rst_ni = 0;
     top_->cam_we_i = 0;
     top_->seg_we_i = 0;
+    top_->surf_we_i = 0;
     top_->item_valid_i = 0;
     top_->res_ready_i = 0;
     top_->pix_ready_i = 0;
@@ -49,6 +50,13 @@ class VerilatedPorts final : public TopPorts {
     tick();
     top_->seg_we_i = 0;
   }
+  void write_surface(std::uint32_t addr, const Bits& data) override {
+    put(top_->surf_data_i, data);
+    top_->surf_addr_i = addr;
+    top_->surf_we_i = 1;
+    tick();
+    top_->surf_we_i = 0;
+  }
   void drive(const WorkItem* item, bool res_ready, bool pix_ready) override {
     top_->item_valid_i = item != nullptr;
     if (item) {
@@ -57,6 +65,8 @@ class VerilatedPorts final : public TopPorts {
       top_->item_j_i = static_cast<unsigned>(item->j);
       top_->item_seg_i = item->seg;
       top_->item_last_i = item->last;
+      top_->item_surf_i = item->surface;
+      top_->item_piece_i = static_cast<unsigned>(item->piece);
     }
     top_->res_ready_i = res_ready;
     top_->pix_ready_i = pix_ready;
@@ -73,6 +83,9 @@ class VerilatedPorts final : public TopPorts {
     r.seg = top_->res_seg_o;
     r.last = top_->res_last_o;
     r.texture = top_->res_tex_o;
+    r.surface = top_->res_surf_o;
+    r.piece = static_cast<int>(top_->res_piece_o);
+    r.pieces = static_cast<int>(top_->res_pieces_o);
     r.primitive = top_->res_prim_o;
     r.pred1 = top_->res_pred1_o;
     r.hit = top_->res_hit_o;

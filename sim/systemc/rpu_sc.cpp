@@ -79,10 +79,16 @@ sim::Bits bits_of(const T& v) {
 // The signals between the testbench modules and the design.
 struct Wires {
   sc_clock clk{"clk", 10, SC_NS};  // Clock::kPeriodNs
-  sc_signal<bool> rst_n{"rst_n"}, cam_we{"cam_we"}, seg_we{"seg_we"};
+  sc_signal<bool> rst_n{"rst_n"}, cam_we{"cam_we"}, seg_we{"seg_we"}, surf_we{"surf_we"};
   sig_t<decltype(Vrpu_top_sc::cam_data_i)> cam_data{"cam_data"};
   sig_t<decltype(Vrpu_top_sc::seg_addr_i)> seg_addr{"seg_addr"};
   sig_t<decltype(Vrpu_top_sc::seg_data_i)> seg_data{"seg_data"};
+  sig_t<decltype(Vrpu_top_sc::surf_addr_i)> surf_addr{"surf_addr"};
+  sig_t<decltype(Vrpu_top_sc::surf_data_i)> surf_data{"surf_data"};
+  sc_signal<bool> item_surf{"item_surf"}, res_surf{"res_surf"};
+  sig_t<decltype(Vrpu_top_sc::item_piece_i)> item_piece{"item_piece"};
+  sig_t<decltype(Vrpu_top_sc::res_piece_o)> res_piece{"res_piece"};
+  sig_t<decltype(Vrpu_top_sc::res_pieces_o)> res_pieces{"res_pieces"};
   sc_signal<bool> item_valid{"item_valid"}, item_ready{"item_ready"}, item_last{"item_last"};
   sig_t<decltype(Vrpu_top_sc::item_id_i)> item_id{"item_id"};
   sig_t<decltype(Vrpu_top_sc::item_i_i)> item_i{"item_i"};
@@ -113,6 +119,14 @@ struct Wires {
     d.seg_we_i(seg_we);
     d.seg_addr_i(seg_addr);
     d.seg_data_i(seg_data);
+    d.surf_we_i(surf_we);
+    d.surf_addr_i(surf_addr);
+    d.surf_data_i(surf_data);
+    d.item_surf_i(item_surf);
+    d.item_piece_i(item_piece);
+    d.res_surf_o(res_surf);
+    d.res_piece_o(res_piece);
+    d.res_pieces_o(res_pieces);
     d.item_valid_i(item_valid);
     d.item_ready_o(item_ready);
     d.item_id_i(item_id);
@@ -188,6 +202,15 @@ SC_MODULE(Loader) {
       cycle();
     }
     w->seg_we = false;
+    for (size_t k = 0; k < f->surfaces.size(); ++k) {
+      value_t<decltype(Vrpu_top_sc::surf_data_i)> surf;
+      to_sc(surf, f->surfaces[k]);
+      w->surf_data = surf;
+      w->surf_addr = static_cast<std::uint32_t>(k);
+      w->surf_we = true;
+      cycle();
+    }
+    w->surf_we = false;
     reset();
     clock->start = sc_time_stamp();
     clock->running = true;
@@ -216,6 +239,8 @@ SC_MODULE(Source) {
         w->item_j = static_cast<std::uint32_t>(cur.j);
         w->item_seg = cur.seg;
         w->item_last = cur.last;
+        w->item_surf = cur.surface;
+        w->item_piece = static_cast<std::uint32_t>(cur.piece);
         if (w->item_ready.read()) {  // taken at the coming rising edge
           if (first_accept < 0) first_accept = static_cast<std::int64_t>(clock->index());
           have = false;
@@ -249,6 +274,9 @@ SC_MODULE(ResultSink) {
       r.seg = static_cast<std::uint32_t>(w->res_seg.read());
       r.last = w->res_last.read();
       r.texture = w->res_tex.read();
+      r.surface = w->res_surf.read();
+      r.piece = static_cast<int>(w->res_piece.read());
+      r.pieces = static_cast<int>(w->res_pieces.read());
       r.primitive = static_cast<std::uint32_t>(w->res_prim.read());
       r.pred1 = w->res_pred1.read();
       r.hit = w->res_hit.read();
@@ -374,10 +402,11 @@ int sc_main(int argc, char** argv) {
     dut.final();
     // As the C++ harness: cycles up to and including the one that took the last pixel.
     rec.stats.cycles = rec.stats.timed_out ? recorder.limit : psink.last_index + 1;
-    rec.stats.load_cycles = 1 + f.segments.size();
+    rec.stats.load_cycles = 1 + f.segments.size() + f.surfaces.size();
     rec.stats.items = f.items.size();
     rec.stats.curve_items = f.curve_items;
     rec.stats.texture_items = f.texture_items;
+    rec.stats.surface_items = f.surface_items;
     rec.stats.pixels = rec.pixels.size();
     for (const auto& r : rec.results) rec.stats.hits += r.hit;
     if (source.first_accept >= 0 && rsink.first_result >= 0)

@@ -1,6 +1,7 @@
 // rpu_top against the model through the co-simulation harness (sim/harness): every field of
 // every work item's result and every pixel of the pixel stream. Modes (first argument):
-//   frame        a demo frame's work items (curves and textures), random valid and ready
+//   frame        a demo frame's work items (curves, textures, surface pieces), random valid and
+//                ready
 //   throughput   10,000 work items, input always valid, outputs always ready: counts cycles,
 //                checks cycles ≤ items + latency + 8 (unrolled) and reports latency and rate
 //   backpressure random valid and ready with long stalls: the in-order scoreboard proves
@@ -26,13 +27,13 @@ sim::FrameSchedule repeat_items(const sim::FrameSchedule& f, std::size_t count) 
   r.items.clear();
   r.expected.clear();
   r.expected_pixels.clear();
-  r.curve_items = r.texture_items = 0;
+  r.curve_items = r.texture_items = r.surface_items = 0;
   for (std::size_t k = 0; k < count; ++k) {
     sim::WorkItem it = f.items[k % f.items.size()];
     sim::ItemResult e = f.expected[k % f.items.size()];
     it.id = e.id = static_cast<std::uint32_t>(k);
     it.last = e.last = true;
-    (it.texture ? r.texture_items : r.curve_items)++;
+    r.count(it);
     r.items.push_back(it);
     r.expected.push_back(e);
     r.expected_pixels.push_back({e.i, e.j, e.hit, e.hit ? e.depth : 0, e.hit ? e.primitive : 0});
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
   }
   const std::uint64_t seed = sim::test_seed("tb_rpu_top");
   // NAME or NAME+OTHER+...: the first scene's camera with every scene's primitives (a frame
-  // that mixes curve and texture items, so the order FIFO merges both result streams).
+  // that mixes curve, texture and surface items, so the order FIFO merges the result streams).
   scene::Scene scn;
   for (std::size_t at = 0, k = 0; at <= scene_name.size(); ++k) {
     const std::size_t end = std::min(scene_name.find('+', at), scene_name.size());
@@ -108,10 +109,11 @@ int main(int argc, char** argv) {
   }
   const auto ull = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
   std::printf("rpu_top %s (%s), %s %dx%d: matched %llu items (%llu curve, %llu texture, %llu "
-              "hits) and %llu pixels in %llu cycles, latency %llu cycles, %.3f items/cycle, "
-              "%llu input stall cycles\n",
+              "surface, %llu hits) and %llu pixels in %llu cycles, latency %llu cycles, %.3f "
+              "items/cycle, %llu input stall cycles\n",
               mode.c_str(), cfg->name.c_str(), scene_name.c_str(), size, size, ull(st.items),
-              ull(st.curve_items), ull(st.texture_items), ull(st.hits), ull(st.pixels),
+              ull(st.curve_items), ull(st.texture_items), ull(st.surface_items), ull(st.hits),
+              ull(st.pixels),
               ull(st.cycles), ull(st.latency_cycles), st.items_per_cycle(), ull(st.stall_cycles));
   if (mode == "throughput" && cfg->params.unrolled &&
       st.cycles > st.items + st.latency_cycles + 8) {

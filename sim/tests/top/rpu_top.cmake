@@ -1,5 +1,6 @@
 # rpu_top through the co-simulation harness (sim/harness, its Verilated configurations):
-# frames of curves and textures, throughput, backpressure, X seeds; unrolled and iterative.
+# frames of curves, textures and surfaces, throughput, backpressure, X seeds; unrolled and
+# iterative.
 add_executable(tb_rpu_top tb/top/tb_rpu_top.cpp)
 target_include_directories(tb_rpu_top PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/tb)
 target_link_libraries(tb_rpu_top PRIVATE rpu_rtl)
@@ -17,6 +18,14 @@ add_test(NAME tb_rpu_top_iter COMMAND tb_rpu_top frame --size 24 --config n16_n1
 add_test(NAME tb_rpu_top_mixed COMMAND tb_rpu_top frame --scene curve12+ellipse6 --size 24
          --config n16_n1_2_iterative)
 add_test(NAME tb_rpu_top_iter_throughput COMMAND tb_rpu_top throughput --config n16_n1_2_iterative)
+# All three kinds in one frame (surf_mix: a curve, a texture, a relief ellipsoid and a rocket):
+# the surface path, its ring admission at the input, and the order FIFO's three-way merge; the
+# pixel resolve orders hits across kinds. Unrolled curves, and the iterative form with
+# backpressure.
+add_test(NAME tb_rpu_top_surf_mix COMMAND tb_rpu_top frame --scene surf_mix --size 16)
+add_test(NAME tb_rpu_top_surf_backpressure COMMAND tb_rpu_top backpressure --scene surf_mix
+         --size 12 --config n16_n1_2_iterative)
 set_tests_properties(tb_rpu_top tb_rpu_top_airfield tb_rpu_top_throughput tb_rpu_top_backpressure
                      tb_rpu_top_xseeds tb_rpu_top_iter tb_rpu_top_iter_throughput tb_rpu_top_mixed
+                     tb_rpu_top_surf_mix tb_rpu_top_surf_backpressure
                      PROPERTIES LABELS rtl)
