@@ -109,12 +109,18 @@ add_test(NAME rtl_trace_pixel COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
          "-DARGS=render;builtin:curve12;--size;32x32;--backend;rtl;--trace-pixel;16,9;--trace-out;${RPU_CMP_OUT}/p16_9.fst;-o;${RPU_CMP_OUT}/trace.png"
          -DEXPECT_RC=0 "-DEXPECT_ERR=pixel \\(16,9\\): [0-9]+ work items"
          "-DFILES=${RPU_CMP_OUT}/p16_9.fst" -P ${RPU_RUN})
+# A surface piece's waveform, with the model's setup and search values of the piece.
+add_test(NAME rtl_trace_pixel_surface COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=render;builtin:surf_rocket;--size;6x6;--backend;rtl;--trace-pixel;3,3;--trace-out;${RPU_CMP_OUT}/rocket_3_3.fst;-o;${RPU_CMP_OUT}/rocket_trace.png"
+         -DEXPECT_RC=0 "-DEXPECT_ERR=pixel \\(3,3\\): 1 work items, [0-9]+ cycles, 0 item and 0 pixel mismatches;surface piece 0 of 1;surface setup: valid 1;search: hit"
+         "-DFILES=${RPU_CMP_OUT}/rocket_3_3.fst" -P ${RPU_RUN})
 # Under a file-size limit the FST writer would die of SIGBUS: refused up front, one line.
 add_test(NAME rtl_trace_pixel_fsize_limit COMMAND ${CMAKE_COMMAND} -DRPU=sh
          "-DARGS=-c;ulimit -f 1 && exec \"$0\" \"$@\";$<TARGET_FILE:rpu>;render;builtin:curve12;--size;16x16;--backend;rtl;--trace-pixel;8,8;--trace-out;${RPU_CMP_OUT}/limited.fst;-o;${RPU_CMP_OUT}/limited.png"
          -DEXPECT_RC=1 "-DEXPECT_ERR=^rpu: error: --trace-pixel: waveforms need an unlimited file size"
          -P ${RPU_RUN})
-list(APPEND rtl_tests rtl_fault_is_caught rtl_trace_pixel rtl_trace_pixel_fsize_limit)
+list(APPEND rtl_tests rtl_fault_is_caught rtl_trace_pixel rtl_trace_pixel_surface
+     rtl_trace_pixel_fsize_limit)
 
 # Bad input to the co-simulation: one line, exit 1 ('~' separates arguments here).
 foreach(bad "no_config|--size~16x16~--n~10~--n1~2|no Verilated rpu_top for n 10"
