@@ -69,6 +69,7 @@ declare -A PARAMS=(
   [rpu_sqrt]="RadW=58"                       # the guide's radicand (= the default)
   [rpu_div]="NumW=51 DenW=28 QuotW=27"       # rpu_ray_gen's reciprocal 2^(2FV+2)/|v|, FV = 24
   [rpu_fifo]="Width=256 Log2Depth=10"        # about rpu_top's result FIFOs
+  [rpu_skid]="W=76"                          # rpu_top's work-item input register
   [rpu_mul]="AW=51 BW=23 Signed=0"           # the guide pair's L²·w, its widest product
 )
 # Reduced configurations (-r or module:reduced): the iterative IP, one rpu_ip_step unit reused
