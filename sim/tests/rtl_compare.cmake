@@ -87,6 +87,11 @@ if(TARGET rpu_sc)
              -P ${PROJECT_SOURCE_DIR}/tests/rtl_systemc.cmake)
     list(APPEND rtl_tests rtl_systemc_${scene})
   endforeach()
+  # Surfaces through the SystemC harness too (surface RAM writes, surface items and results).
+  add_test(NAME rtl_systemc_surf_mix COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+           -DOUT=${RPU_CMP_OUT}/systemc_surf_mix "-DARGS=builtin:surf_mix;--size;8x8;--ip;iterative"
+           -P ${PROJECT_SOURCE_DIR}/tests/rtl_systemc.cmake)
+  list(APPEND rtl_tests rtl_systemc_surf_mix)
 endif()
 
 # The comparison can fail: the argmin tie rule flipped in the RTL (RPU_FAULT_ARGMIN_TIE) must
