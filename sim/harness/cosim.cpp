@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "model/surface/rpu_surface_latency.h"
+
 namespace rpu::sim {
 
 namespace {
@@ -21,6 +23,19 @@ void load(TopPorts& top, const FrameSchedule& f) {
 
 }  // namespace
 
+std::uint64_t default_cycle_limit(const FrameSchedule& f) {
+  // A surface piece holds a ring slot for P passes (142 at the defaults), so surface items get
+  // twice that each, and twice the surface path's latency, on top of the general allowance.
+  const std::uint64_t surface_allowance =
+      f.surface_items == 0
+          ? 0
+          : 2 * static_cast<std::uint64_t>(
+                    ref::surface_ip_passes(f.params, TopWidths::kIndicators)) * f.surface_items +
+                2 * static_cast<std::uint64_t>(
+                        ref::surface_top_latency(f.params, TopWidths::kIndicators));
+  return 100 * f.items.size() + surface_allowance + 100000;
+}
+
 CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
                        const CosimOptions& o) {
   CosimStats st;
@@ -32,7 +47,7 @@ CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
   st.surface_items = f.surface_items;
   std::mt19937_64 rng(o.seed);
   const auto pct = [&](int p) { return p >= 100 || static_cast<int>(rng() % 100) < p; };
-  const std::uint64_t limit = o.max_cycles ? o.max_cycles : 100 * st.items + 100000;
+  const std::uint64_t limit = o.max_cycles ? o.max_cycles : default_cycle_limit(f);
   const auto t0 = std::chrono::steady_clock::now();
   size_t next = 0;
   std::int64_t first_accept = -1, first_result = -1;

@@ -18,7 +18,8 @@ struct CosimOptions {
   int valid_pct = 100, res_ready_pct = 100, pix_ready_pct = 100;
   bool stall_phases = false;      // also long stretches with both sinks stalled
   std::uint64_t seed = 1;         // of the handshake patterns
-  std::uint64_t max_cycles = 0;   // 0: 100 × items + 100,000 (a hang is reported, never waited out)
+  std::uint64_t max_cycles = 0;   // 0: 100 × items + 100,000, and 2 × P per surface piece plus
+                                  // twice the surface latency (a hang is reported, never waited out)
 };
 
 struct CosimStats {
@@ -32,6 +33,10 @@ struct CosimStats {
   bool timed_out = false;
   double items_per_cycle() const { return cycles ? static_cast<double>(items) / cycles : 0; }
 };
+
+// The cycles after which a frame counts as hung: 100 per item + 100,000, and per surface piece
+// twice the search ring's passes plus twice the surface path's latency.
+std::uint64_t default_cycle_limit(const FrameSchedule& f);
 
 // Loads the descriptors into `top` (after a reset) and runs every item of `f`.
 CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,

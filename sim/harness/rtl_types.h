@@ -25,6 +25,7 @@ struct TopWidths {
   static constexpr int kIdW = 32;       // work-item id
   static constexpr int kPrimW = 16;     // primitive id
   static constexpr int kSurfAddrW = 4;  // surface RAM: 16 descriptors
+  static constexpr int kIndicators = 1; // the surface search's pass unit (rpu_top's Indicators)
   int CW, DW, TW, UW, XW, HW, VgW, EgW, R2W, L2W, GdW, CamW, SegW, SurfDW, DepthW, N;
   explicit TopWidths(const ref::HwParams& p);
 };

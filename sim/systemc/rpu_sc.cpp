@@ -394,7 +394,7 @@ int sc_main(int argc, char** argv) {
     recorder.clock = &clock;
     recorder.rec = &rec;
     recorder.want_pixels = f.expected_pixels.size();
-    recorder.limit = 100 * f.items.size() + 100000;
+    recorder.limit = sim::default_cycle_limit(f);
     const auto t0 = std::chrono::steady_clock::now();
     sc_start();
     rec.stats.sim_seconds =
