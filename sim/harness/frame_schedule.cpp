@@ -37,6 +37,22 @@ ItemResult curve_result(const ref::PairResult& r) {
   return e;
 }
 
+// A surface piece's expected result: the piece's valid bit is pred_1, t stays 0.
+ItemResult surface_result(const ref::SurfacePieceResult& r) {
+  ItemResult e;
+  e.surface = true;
+  e.pieces = r.pieces;
+  e.pred1 = r.valid;
+  e.hit = r.hit;
+  e.overflow = r.overflow;
+  e.depth = r.depth;
+  e.tau = r.tau;
+  e.X[0] = r.X.x;
+  e.X[1] = r.X.y;
+  e.X[2] = r.X.z;
+  return e;
+}
+
 }  // namespace
 
 // The camera register in the layout of rtl/top/rpu_cam_desc.vh, most significant field first.
@@ -191,22 +207,11 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
           const ref::SurfaceDesc& s = m->surfaces[k];
           const int pieces = ref::surface_piece_items(s.type);
           for (int q = 0; q < pieces; ++q) {
-            const ref::SurfacePieceResult r =
-                ref::process_surface_piece(p, m->camera, ray.vhat, s, q);
-            ItemResult e;
-            e.surface = true;
+            ItemResult e =
+                surface_result(ref::process_surface_piece(p, m->camera, ray.vhat, s, q));
             e.seg = static_cast<std::uint32_t>(k);
             e.piece = q;
-            e.pieces = r.pieces;
             e.primitive = static_cast<std::uint32_t>(s.primitive);
-            e.pred1 = r.valid;
-            e.hit = r.hit;
-            e.overflow = r.overflow;
-            e.depth = r.depth;
-            e.tau = r.tau;
-            e.X[0] = r.X.x;
-            e.X[1] = r.X.y;
-            e.X[2] = r.X.z;
             WorkItem it{0, i, j, e.seg, false, false};
             it.surface = true;
             it.piece = q;

@@ -44,18 +44,10 @@ class VerilatedPorts final : public TopPorts {
     top_->cam_we_i = 0;
   }
   void write_segment(std::uint32_t addr, const Bits& data) override {
-    put(top_->seg_data_i, data);
-    top_->seg_addr_i = addr;
-    top_->seg_we_i = 1;
-    tick();
-    top_->seg_we_i = 0;
+    write_ram(top_->seg_data_i, top_->seg_addr_i, top_->seg_we_i, addr, data);
   }
   void write_surface(std::uint32_t addr, const Bits& data) override {
-    put(top_->surf_data_i, data);
-    top_->surf_addr_i = addr;
-    top_->surf_we_i = 1;
-    tick();
-    top_->surf_we_i = 0;
+    write_ram(top_->surf_data_i, top_->surf_addr_i, top_->surf_we_i, addr, data);
   }
   void drive(const WorkItem* item, bool res_ready, bool pix_ready) override {
     top_->item_valid_i = item != nullptr;
@@ -137,6 +129,15 @@ class VerilatedPorts final : public TopPorts {
   }
 
  private:
+  // One clock with a descriptor RAM's write enable high.
+  template <class D, class A, class W>
+  void write_ram(D& data_port, A& addr_port, W& we_port, std::uint32_t addr, const Bits& data) {
+    put(data_port, data);
+    addr_port = addr;
+    we_port = 1;
+    tick();
+    we_port = 0;
+  }
   void dump() {
 #if VM_TRACE_FST
     if (fst_) fst_->dump(ctx_->time());
