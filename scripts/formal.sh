@@ -6,13 +6,16 @@
 # The fifo_bug_* targets are mutated copies of rpu_fifo that must FAIL (a counterexample).
 # A failing property makes the script exit 1 and print the trace (VCD) file.
 #
-# Usage: scripts/formal.sh [--smoke] [--out DIR] [--solver z3] [target ...]
-#   targets: fifo resolve admit top fifo_bug_full fifo_bug_stale (default: all)
+# Usage: scripts/formal.sh [--smoke] [--out DIR] [--solver S] [target ...]
+#   targets: fifo resolve admit top fifo_bug_full fifo_bug_stale top_bug_lost (default: all)
 #   --smoke  the default-CI subset: rpu_top only to a short BMC depth (the full depth covers
 #            the reduced pipeline's latency and takes several minutes)
 #   --out    output directory (default build/formal): <target>/{model.ys,yosys.log,*.log,*.vcd}
-# Solver: z3 through smtbmc's --unroll (z3 4.8.12 stalls on the uninterpreted-state encoding;
-# Debian's boolector 1.5 cannot read smtbmc's SMT-LIB2).
+# Solvers: z3 through smtbmc's --unroll for the unit targets (z3 4.8.12 stalls on the
+# uninterpreted-state encoding; Debian's boolector 1.5 cannot read smtbmc's SMT-LIB2). rpu_top:
+# z3 stalls at its first step, so its BMC and covers run cvc5, and its k-induction runs Yosys's
+# own SAT-based `sat -tempinduct` on the same pruned netlist (cvc5 needs minutes per induction
+# step, Yosys's SAT solver about a minute for the whole proof). --solver S: S for every target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -24,7 +27,7 @@ rpu_rtl_read "$root" || exit 2
 
 smoke=0
 out=build/formal
-solver=z3
+solver=""
 targets=()
 while (($#)); do
   case "$1" in
@@ -37,8 +40,8 @@ while (($#)); do
   esac
   shift
 done
-((${#targets[@]})) || targets=(fifo resolve admit top fifo_bug_full fifo_bug_stale)
-for t in yosys yosys-smtbmc "$solver"; do
+((${#targets[@]})) || targets=(fifo resolve admit top fifo_bug_full fifo_bug_stale top_bug_lost)
+for t in yosys yosys-smtbmc ${solver:-z3 cvc5}; do
   command -v "$t" >/dev/null || { echo "formal.sh: $t: not found (scripts/setup.sh)" >&2; exit 2; }
 done
 mkdir -p "$out"
@@ -55,27 +58,30 @@ top_cut="res_pred1_o res_hit_o res_depth_o res_tau_o res_t_o res_x_o res_ovf_o r
   res_pieces_o pix_hit_o pix_depth_o pix_prim_o"
 
 # target -> "module|defines|params|bmc depth|induction depth (0: none)|cover depth|expect"
-# Depths: rpu_top's texture result is first reachable at step 96, its curve result at step 136
-# (cover; accepted at step 1). z3's cost per step grows steeply (8 minutes per step past 100 on a
-# 2-core machine), so the BMC stops at 102 steps (about 50 minutes: the texture path, all four
-# credits in flight; docs/verification.md) and the cover traces go to 145 (the curve path);
-# --smoke checks the first 16 cycles.
-top_bmc=102; top_cover=145
-((smoke)) && { top_bmc=16; top_cover=0; }
+# Depths: the proof's pipelines are in-order queues of free delay (RPU_FORMAL_TOP), so every kind
+# of result is reachable within ten steps; k-induction up to 12 (it closes at 2: with its base
+# case that is the proof), the BMC to 12 (sat's base case grows to minutes per step there), the
+# covers to 24. --smoke: BMC 6, the induction, covers to 12 (docs/verification.md).
+top_bmc=12; top_ind=12; top_cover=24
+((smoke)) && { top_bmc=6; top_cover=12; }
 declare -A spec=(
   [fifo]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|8|12|pass"
   [resolve]="rpu_resolve|RPU_FORMAL_RESOLVE|PixW=2 DepthW=3 PrimW=2|24|8|12|pass"
   [admit]="rpu_surface_admit|RPU_FORMAL_ADMIT|Period=3 Returns=2|24|8|16|pass"
-  [top]="rpu_top|RPU_FORMAL_TOP|$(echo $top_params)|$top_bmc|0|$top_cover|pass"
+  [top]="rpu_top|RPU_FORMAL_TOP|$(echo $top_params)|$top_bmc|$top_ind|$top_cover|pass"
   [fifo_bug_full]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
   [fifo_bug_stale]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
+  [top_bug_lost]="rpu_top|RPU_FORMAL_TOP|$(echo $top_params)|12|0|0|fail"
 )
 
 # Deliberate faults (sed expressions on a copy of rtl/common/rpu_fifo.v):
 #   fifo_bug_full:  wr_ready_o always 1: a write while full overwrites the oldest entry.
 #   fifo_bug_stale: the output register loads only when taken, not when empty: an entry
 #                   arriving at an empty FIFO is announced with the previous entry's data.
+#   top_bug_lost:   rpu_top's curve FIFO is also read when a texture result leaves: a curve
+#                   result is lost, the next one takes its place (order, exactly once).
 declare -A mutation=(
+  [top_bug_lost]="s/rd_ready_i(pop \&\& !head_surf \&\& !head_tex)/rd_ready_i(pop \&\& !head_surf)/"
   [fifo_bug_full]="s/assign wr_ready_o = fill != Depth\[Log2Depth:0\];/assign wr_ready_o = 1'b1;/"
   [fifo_bug_stale]="s/    if (load)  out_q <= mem_q/    if (take)  out_q <= mem_q/"
 )
@@ -89,7 +95,7 @@ secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
 run_smtbmc() {
   local dir=$1 name=$2; shift 2
   local rc=0
-  yosys-smtbmc -s "$solver" --unroll "$@" --dump-vcd "$dir/$name.vcd" "$dir/model.smt2" \
+  yosys-smtbmc -s "$tsolver" --unroll "$@" --dump-vcd "$dir/$name.vcd" "$dir/model.smt2" \
     > "$dir/$name.log" 2>&1 || rc=$?
   if grep -q "Status: PASSED" "$dir/$name.log"; then return 0; fi
   if grep -q "Status: FAILED" "$dir/$name.log"; then return 1; fi
@@ -99,14 +105,18 @@ run_smtbmc() {
 for t in "${targets[@]}"; do
   [ -n "${spec[$t]+x}" ] || { echo "formal.sh: $t: unknown target" >&2; exit 2; }
   IFS='|' read -r mod defs params bmc ind cov expect <<< "${spec[$t]}"
+  tsolver=${solver:-z3}
+  [ "$mod" = rpu_top ] && tsolver=${solver:-cvc5}
   dir=$out/$t
   rm -rf "$dir"; mkdir -p "$dir"
   srcs=()
   for f in "${rtl_sources[@]}"; do
-    if [ -n "${mutation[$t]+x}" ] && [ "$(basename "$f")" = rpu_fifo.v ]; then
-      sed "${mutation[$t]}" "$f" > "$dir/rpu_fifo.v"
-      cmp -s "$f" "$dir/rpu_fifo.v" && { echo "formal.sh: $t: mutation did not apply" >&2; exit 2; }
-      srcs+=("$dir/rpu_fifo.v")
+    mfile=rpu_fifo.v
+    [ "$mod" = rpu_top ] && mfile=rpu_top.v
+    if [ -n "${mutation[$t]+x}" ] && [ "$(basename "$f")" = "$mfile" ]; then
+      sed "${mutation[$t]}" "$f" > "$dir/$mfile"
+      cmp -s "$f" "$dir/$mfile" && { echo "formal.sh: $t: mutation did not apply" >&2; exit 2; }
+      srcs+=("$dir/$mfile")
     else
       srcs+=("$f")
     fi
@@ -141,6 +151,7 @@ for t in "${targets[@]}"; do
       echo "opt_clean"
     fi
     echo "tee -o $dir/stat.txt stat"
+    [ "$mod" = rpu_top ] && echo "write_rtlil $dir/model.il"
     echo "write_smt2 -wires $dir/model.smt2"
   } > "$dir/model.ys"
   t0=$(now)
@@ -153,8 +164,25 @@ for t in "${targets[@]}"; do
   ffs=$(awk '/\$_DFF_|\$dff / { n += $2 } END { print n + 0 }' "$dir/stat.txt")
   result=""
   ok=1
-  # BMC.
-  rc=0; run_smtbmc "$dir" bmc -t "$bmc" || rc=$?
+  # BMC (rpu_top: Yosys's sat, the base case of a temporal induction, to depth bmc).
+  rc=0
+  if [ "$mod" = rpu_top ]; then
+    { echo "read_rtlil $dir/model.il"
+      echo "chformal -remove -cover"
+      echo "setundef -anyseq"
+      echo "sat -tempinduct -tempinduct-baseonly -prove-asserts -set-assumes -maxsteps $bmc -dump_vcd $dir/bmc.vcd"
+    } > "$dir/bmc.ys"
+    yosys -l "$dir/bmc.log" "$dir/bmc.ys" > /dev/null 2>&1 || true
+    if grep -q "Base case for induction length $bmc proven" "$dir/bmc.log"; then rc=0
+    elif grep -q "model found for base case: FAIL" "$dir/bmc.log"; then
+      # sat names no property: the failing step, and the trace.
+      k=$(grep -o 'Trying induction with length [0-9]*' "$dir/bmc.log" | tail -1 | grep -o '[0-9]*$')
+      echo "Assert failed in rpu_top (Yosys sat names no property) at step $k" >> "$dir/bmc.log"
+      rc=1
+    else rc=2; fi
+  else
+    run_smtbmc "$dir" bmc -t "$bmc" || rc=$?
+  fi
   t2=$(now)
   if [ "$expect" = fail ]; then
     if ((rc == 1)) && grep -q "Assert failed" "$dir/bmc.log"; then
@@ -168,14 +196,29 @@ for t in "${targets[@]}"; do
       1) ok=0; result="BMC FAILED: $(grep -m1 'Assert failed' "$dir/bmc.log" | sed 's/.*Assert failed in //'); trace $dir/bmc.vcd" ;;
       *) ok=0; result="BMC error: $dir/bmc.log" ;;
     esac
-    # k-induction.
-    if ((ok && ind > 0)); then
+    # k-induction (rpu_top: Yosys's sat -tempinduct, base case and induction step, k up to ind).
+    if ((ok && ind > 0)) && [ "$mod" = rpu_top ]; then
+      t3=$(now)
+      { echo "read_rtlil $dir/model.il"
+        echo "chformal -remove -cover"
+        echo "setundef -anyseq"
+        echo "sat -tempinduct -prove-asserts -set-assumes -maxsteps $ind -dump_vcd $dir/induction.vcd"
+      } > "$dir/induction.ys"
+      yosys -l "$dir/induction.log" "$dir/induction.ys" > /dev/null 2>&1 || true
+      t4=$(now)
+      if grep -q "Induction step proven: SUCCESS" "$dir/induction.log"; then
+        k=$(grep -o "Trying induction with length [0-9]*" "$dir/induction.log" | tail -1 | grep -o "[0-9]*$")
+        result+="; k-induction (Yosys sat) closed at k = $k ($(secs "$t3" "$t4") s)"
+      else
+        ok=0; result+="; k-induction FAILED within $ind (a base-case failure is a real trace, an induction-step failure a missing invariant): $dir/induction.log, $dir/induction.vcd"
+      fi
+    elif ((ok && ind > 0)); then
       t3=$(now); rc=0; run_smtbmc "$dir" induction -i -t "$ind" || rc=$?; t4=$(now)
       if ((rc == 0)); then
         # The smallest k that closes, for the report.
         k=1
         while ((k < ind)); do
-          yosys-smtbmc -s "$solver" --unroll -i -t "$k" "$dir/model.smt2" 2>&1 |
+          yosys-smtbmc -s "$tsolver" --unroll -i -t "$k" "$dir/model.smt2" 2>&1 |
             grep -q "Status: PASSED" && break
           k=$((k + 1))
         done

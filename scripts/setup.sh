@@ -7,7 +7,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libopenimageio-dev openimageio-tools
-  verilator libsystemc-dev yosys z3 clang libclang-rt-14-dev
+  verilator libsystemc-dev yosys z3 cvc5 clang libclang-rt-14-dev
   parallel python3
 )
 missing=()

@@ -28,6 +28,13 @@ module rpu_fifo #(
   output wire             rd_valid_o,
   input  wire             rd_ready_i,
   output wire [Width-1:0] rd_data_o
+`ifdef FORMAL
+  ,
+  // Formal only (rpu_top's invariants over its queues): the entries held, and entry p from the
+  // head (p = 0: the next read) at [p*Width +: Width], meaningful for p < f_count_o.
+  output wire [Log2Depth+1:0]                f_count_o,
+  output wire [((1<<Log2Depth)+1)*Width-1:0] f_entries_o
+`endif
 );
   localparam integer Depth = 1 << Log2Depth;
 
@@ -81,6 +88,17 @@ module rpu_fifo #(
   always @(posedge clk_i) f_past_valid <= 1'b1;
   // Entries held: the memory's plus the output register's.
   wire [Log2Depth+1:0] f_count = {1'b0, fill} + {{(Log2Depth+1){1'b0}}, out_valid_q};
+  assign f_count_o = f_count;
+  genvar f_p;
+  generate
+    for (f_p = 0; f_p <= Depth; f_p = f_p + 1) begin : g_f_entry
+      // The output register holds entry 0 when valid; the memory the rest from slot rd_q.
+      localparam [Log2Depth:0] P = f_p;
+      wire [Log2Depth:0] slot = rd_q + P - {{Log2Depth{1'b0}}, out_valid_q};
+      assign f_entries_o[f_p*Width +: Width] = (f_p == 0 && out_valid_q) ? out_q
+                                             : mem_q[slot[Log2Depth-1:0]];
+    end
+  endgenerate
 `ifdef RPU_FORMAL_FIFO
   always @(*) if (!f_past_valid) assume(!rst_ni);
 `endif

@@ -17,6 +17,13 @@ module rpu_skid #(
   output wire         valid_o,
   input  wire         ready_i,
   output wire [W-1:0] data_o
+`ifdef FORMAL
+  ,
+  // Formal only (rpu_top's invariants): the words held (the spill slot is only full behind a
+  // full output register) and the words, {spill, output} (the output register's is the older).
+  output wire [1:0]     f_count_o,
+  output wire [2*W-1:0] f_entries_o
+`endif
 );
   initial begin
     if (W < 1) $fatal(1, "rpu_skid: W must be >= 1");
@@ -56,6 +63,11 @@ module rpu_skid #(
       spill_q <= data_i;
     end
   end
+`ifdef FORMAL
+  assign f_count_o   = {1'b0, out_valid_q} + {1'b0, spill_valid_q};
+  assign f_entries_o = {spill_q, out_q};
+  always @(*) if (rst_ni) assert(!spill_valid_q || out_valid_q);
+`endif
 endmodule
 
 `default_nettype wire

@@ -51,6 +51,13 @@ module rpu_surface_admit #(
   always @(posedge clk_i) f_past_valid <= 1'b1;
   always @(*) if (!f_past_valid) assume(!rst_ni);
 `endif
+  integer f_p;
+  always @(*) if (rst_ni)
+    for (f_p = 0; f_p < Period; f_p = f_p + 1) assert(due_q[f_p * CntW +: CntW] <= Full);
+  always @(*) if (rst_ni) cover(valid_i && !ready_o);
+  // The tracked item only in the standalone proof: as rpu_top's submodule, only the counter
+  // bound (its divisions would slow the top's solvers for no property of the top's).
+`ifdef RPU_FORMAL_ADMIT
   localparam integer FEnd = (Returns + 1) * Period;  // age at which the item's slot is free
   wire accept = valid_i && ready_o;
   (* anyseq *) wire f_pick;
@@ -68,11 +75,8 @@ module rpu_surface_admit #(
   wire [15:0]     f_slot  = (Period[15:0] - (f_age % Period[15:0])) % Period[15:0];
   wire [15:0]     f_left  = Returns[15:0] - (f_age - 16'd1) / Period[15:0];
   wire [CntW-1:0] f_cnt   = due_q[f_slot * CntW +: CntW];
-  integer f_p;
   always @(*) begin
     if (rst_ni) begin
-      for (f_p = 0; f_p < Period; f_p = f_p + 1)
-        assert(due_q[f_p * CntW +: CntW] <= Full);
       if (f_track && f_age != 16'd0 && f_age <= Returns[15:0] * Period[15:0])
         assert({{(16 - CntW){1'b0}}, f_cnt} == f_left);
       if (f_track && f_age != 16'd0 && f_age % Period[15:0] == 16'd0) begin
@@ -81,11 +85,10 @@ module rpu_surface_admit #(
       end
     end
   end
-  // Reachability: an item refused for a returning one, the tracked item through all returns.
-  always @(*) if (rst_ni) begin
-    cover(valid_i && !ready_o);
-    cover(f_track && f_age == FEnd[15:0] && accept);
-  end
+  // Reachability: the tracked item through all returns (and above: an item refused for a
+  // returning one).
+  always @(*) if (rst_ni) cover(f_track && f_age == FEnd[15:0] && accept);
+`endif
 `endif
 endmodule
 

@@ -173,10 +173,18 @@ module rpu_top #(
   // ---- input: a skid register, so item_ready_o is a flip-flop ----
   wire           in_valid, in_ready;
   wire [ItW-1:0] in_item;
+`ifdef FORMAL
+  wire [1:0]       f_in_cnt;   // the formal block's view of the queues (rpu_skid, rpu_fifo)
+  wire [2*ItW-1:0] f_in_ent;
+`endif
   rpu_skid #(.W(ItW)) u_in (
     .clk_i, .rst_ni, .valid_i(item_valid_i), .ready_o(item_ready_o),
     .data_i({item_piece_i, item_surf_i, item_last_i, item_id_i, item_i_i, item_j_i, item_seg_i}),
-    .valid_o(in_valid), .ready_i(in_ready), .data_o(in_item));
+    .valid_o(in_valid), .ready_i(in_ready), .data_o(in_item)
+`ifdef FORMAL
+    , .f_count_o(f_in_cnt), .f_entries_o(f_in_ent)
+`endif
+  );
   wire in_surf = in_item[ItSurfO];
 
   // ---- admission: credits for every item in flight or waiting in an output FIFO, and a slot of
@@ -218,11 +226,39 @@ module rpu_top #(
   wire [3*(2+DirFrac)-1:0] rg_vhat;
   wire [3*EoW-1:0] rg_el, rg_er, rg_et, rg_eb;
   wire [ItW+SegW-1:0] rg_tag;
+`ifdef RPU_FORMAL_TOP
+  // The top's proof (scripts/formal.sh, docs/verification.md) replaces each pipeline by what
+  // rpu_top relies on: an in-order queue that returns every item's tag once, after any delay
+  // (an rpu_fifo read at free times, f_*_go). That covers every fixed latency, and the
+  // iterative IP's varying one; the units' own fixed latency and tags have proofs of their own
+  // (formal.sh pipe targets). The datapath values are cut from the proof anyway.
+  (* anyseq *) wire f_rg_go;
+  wire             f_rg_v, f_rg_wr_unused;
+  wire [ItW:0]     f_rg_d;
+  wire [FifoLog2+1:0] f_rg_cnt;
+  wire [((1<<FifoLog2)+1)*(ItW+1)-1:0] f_rg_ent;
+  reg  [SegW-1:0]  f_rg_sd;
+  rpu_fifo #(.Width(ItW + 1), .Log2Depth(FifoLog2)) u_f_rg (
+    .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(f_rg_wr_unused),
+    .wr_data_i({item_q, seg_q[SegTexO]}), .rd_valid_o(f_rg_v), .rd_ready_i(f_rg_go),
+    .rd_data_o(f_rg_d), .f_count_o(f_rg_cnt), .f_entries_o(f_rg_ent));
+  always @(*) begin
+    f_rg_sd          = {SegW{1'b0}};
+    f_rg_sd[SegTexO] = f_rg_d[0];
+  end
+  assign rg_valid = f_rg_v && f_rg_go;
+  assign rg_tag   = {f_rg_d[1 +: ItW], f_rg_sd};
+  assign {rg_v_unused, rg_vhat, rg_el, rg_er, rg_et, rg_eb} =
+      {(3*(4+DirFrac) + 3*(2+DirFrac) + 12*EoW){1'b0}};
+  wire unused_f_rg = ^{f_rg_wr_unused, it_i, it_j, cam_v0, cam_dx, cam_dy, cam_el0, cam_et0,
+                       cam_sw};
+`else
   rpu_ray_gen #(.DirFrac(DirFrac), .EdgeFrac(EdgeFrac), .IdxW(IdxW), .TagW(ItW + SegW)) u_ray (
     .clk_i, .rst_ni, .valid_i(v0_q), .i_i(it_i), .j_i(it_j), .v0_i(cam_v0), .dx_i(cam_dx),
     .dy_i(cam_dy), .el0_i(cam_el0), .et0_i(cam_et0), .sw_i(cam_sw), .tag_i({item_q, seg_q}),
     .valid_o(rg_valid), .v_o(rg_v_unused), .vhat_o(rg_vhat), .e_left_o(rg_el),
     .e_right_o(rg_er), .e_top_o(rg_et), .e_bottom_o(rg_eb), .tag_o(rg_tag));
+`endif
 
   // Edge vectors: the compiler guarantees every pixel's fit Q(4.FE+14) (EgW bits), so the
   // generator's wider outputs are narrowed losslessly.
@@ -257,6 +293,7 @@ module rpu_top #(
   wire [SegFrW-1:0]   sd_fr   = sd[SegFrO +: SegFrW];
   wire [SegFgW-1:0]   sd_fg   = sd[SegFgO +: SegFgW];      // {fg1, fg2}
 
+`ifndef RPU_FORMAL_TOP
   // ---- sphere unit ----
   wire             sp_valid, sp_pred1, sp_ovf;
   wire [CoordW+3:0] sp_tc_unused;
@@ -355,6 +392,39 @@ module rpu_top #(
   wire [PrimW-1:0]  tx_prim  = tx_tag[TtPrimO +: PrimW];
   wire              tx_p0ok  = tx_tag[TtP0OkO];
   wire [DepthW-1:0] tx_depth = tx_tag[TtDepthO +: DepthW];
+`else
+  // The curve path (sphere unit, IP, capture) and the texture path (ray/plane point, coverage
+  // test) as the proof's in-order queues of free delay (above, at the ray generator): the item
+  // word comes back, every datapath value is 0.
+  (* anyseq *) wire f_cv_go, f_tx_go;
+  wire             f_cv_v, f_tx_v, f_cv_wr_unused, f_tx_wr_unused;
+  wire [ItBW-1:0]  f_cv_d, f_tx_d;
+  wire [FifoLog2+1:0] f_cv_cnt, f_tx_cnt;
+  wire [((1<<FifoLog2)+1)*ItBW-1:0] f_cv_ent, f_tx_ent;
+  rpu_fifo #(.Width(ItBW), .Log2Depth(FifoLog2)) u_f_cv (
+    .clk_i, .rst_ni, .wr_valid_i(rg_valid && !rg_surf && !sd_tex), .wr_ready_o(f_cv_wr_unused),
+    .wr_data_i(rg_itb), .rd_valid_o(f_cv_v), .rd_ready_i(f_cv_go), .rd_data_o(f_cv_d),
+    .f_count_o(f_cv_cnt), .f_entries_o(f_cv_ent));
+  rpu_fifo #(.Width(ItBW), .Log2Depth(FifoLog2)) u_f_tx (
+    .clk_i, .rst_ni, .wr_valid_i(rg_valid && sd_tex), .wr_ready_o(f_tx_wr_unused),
+    .wr_data_i(rg_itb), .rd_valid_o(f_tx_v), .rd_ready_i(f_tx_go), .rd_data_o(f_tx_d),
+    .f_count_o(f_tx_cnt), .f_entries_o(f_tx_ent));
+  wire              cp_valid = f_cv_v && f_cv_go;
+  wire              cp_hit   = 1'b0;
+  wire [DepthW-1:0] cp_depth = {DepthW{1'b0}};
+  wire [CapTagW-1:0] cp_tag  = {f_cv_d, {CtItO{1'b0}}};
+  wire              c_pred1  = 1'b0;
+  wire              tx_valid = f_tx_v && f_tx_go;
+  wire              tx_covers = 1'b0, tx_ovf = 1'b0;
+  wire [TW-1:0]     tx_t     = {TW{1'b0}};
+  wire [3*XW-1:0]   tx_x     = {3*XW{1'b0}};
+  wire [ItBW-1:0]   tx_it    = f_tx_d;
+  wire [PrimW-1:0]  tx_prim  = {PrimW{1'b0}};
+  wire              tx_p0ok  = 1'b0;
+  wire [DepthW-1:0] tx_depth = {DepthW{1'b0}};
+  wire unused_f_paths = ^{f_cv_wr_unused, f_tx_wr_unused, sd_prim, sd_p1, sd_d, sd_c0, sd_r2,
+                          sd_l2, sd_invm, sd_invs, sd_g, sd_fr, sd_fg, rg_edges, cam_eye, cam_w};
+`endif
 
   // ---- surface path: the descriptor read beside the ray, then rpu_surface_top ----
   reg                sf_v_q;
@@ -377,24 +447,21 @@ module rpu_top #(
   wire [DepthW-1:0] sf_depth;
   wire [ItW+PrimW-1:0] sf_tag;
 `ifdef RPU_FORMAL_TOP
-  // The top's proof (scripts/formal.sh) abstracts the surface unit as what rpu_top relies on: a
-  // pipe of fixed latency (here 4) that returns every item's tag in order, one result per item
-  // (tb_rpu_surface_top checks the unit's own latency and order, its admission assertions the
-  // ring's slots). Its datapath outputs are cut from that proof anyway.
-  localparam integer SfAbsL = 4;
-  localparam integer SfTagW = ItW + PrimW;
-  reg [SfAbsL-1:0]        sfa_v_q;
-  reg [SfAbsL*SfTagW-1:0] sfa_t_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) sfa_v_q <= {SfAbsL{1'b0}};
-    else         sfa_v_q <= {sfa_v_q[SfAbsL-2:0], sf_v_q};
-  end
-  always @(posedge clk_i) sfa_t_q <= {sfa_t_q[0 +: (SfAbsL-1)*SfTagW], sf_it_q, sf_q[SfPrimO +: PrimW]};
-  assign sf_valid = sfa_v_q[SfAbsL-1];
-  assign sf_tag   = sfa_t_q[(SfAbsL-1)*SfTagW +: SfTagW];
+  // The surface unit as the proof's in-order queue of free delay (above, at the ray generator);
+  // the input's ring admission stays real (rpu_surface_admit has its own proof, and
+  // tb_rpu_surface_top checks the real unit's latency, order and ring slots).
+  (* anyseq *) wire f_sf_go;
+  wire               f_sf_v, f_sf_wr_unused;
+  wire [FifoLog2+1:0] f_sf_cnt;
+  wire [((1<<FifoLog2)+1)*(ItW+PrimW)-1:0] f_sf_ent;
+  rpu_fifo #(.Width(ItW + PrimW), .Log2Depth(FifoLog2)) u_f_sf (
+    .clk_i, .rst_ni, .wr_valid_i(sf_v_q), .wr_ready_o(f_sf_wr_unused),
+    .wr_data_i({sf_it_q, sf_q[SfPrimO +: PrimW]}), .rd_valid_o(f_sf_v), .rd_ready_i(f_sf_go),
+    .rd_data_o(sf_tag), .f_count_o(f_sf_cnt), .f_entries_o(f_sf_ent));
+  assign sf_valid = f_sf_v && f_sf_go;
   assign {sf_ready_unused, sf_pv, sf_hit, sf_ovf, sf_pcs, sf_tau, sf_x, sf_depth} =
       {(6 + N + 3*CoordW + DepthW){1'b0}};
-  wire unused_sf_abs = ^{sf_vhat_q, sf_q};
+  wire unused_sf_abs = ^{sf_vhat_q, sf_q, f_sf_wr_unused};
 `else
   rpu_surface_top #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
                     .SqrtW(SqrtW), .EdgeFrac(EdgeFrac), .SurfW(SurfW), .AngleW(AngleW),
@@ -447,19 +514,40 @@ module rpu_top #(
   wire              head_valid = o_valid && (head_surf ? sf_fifo_valid
                                            : head_tex ? tx_fifo_valid : c_valid);
   wire              rs_ready;
+`ifdef FORMAL
+  wire [FifoLog2+1:0] f_c_cnt, f_t_cnt, f_s_cnt, f_o_cnt;
+  wire [((1<<FifoLog2)+1)*ResW-1:0] f_c_ent, f_t_ent, f_s_ent;
+  wire [((1<<FifoLog2)+1)*2-1:0]    f_o_ent;
+`endif
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_curve_fifo (
     .clk_i, .rst_ni, .wr_valid_i(cp_valid), .wr_ready_o(c_wr_ready_unused), .wr_data_i(cres),
-    .rd_valid_o(c_valid), .rd_ready_i(pop && !head_surf && !head_tex), .rd_data_o(c_data));
+    .rd_valid_o(c_valid), .rd_ready_i(pop && !head_surf && !head_tex), .rd_data_o(c_data)
+`ifdef FORMAL
+    , .f_count_o(f_c_cnt), .f_entries_o(f_c_ent)
+`endif
+  );
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_texture_fifo (
     .clk_i, .rst_ni, .wr_valid_i(tx_valid), .wr_ready_o(tx_wr_ready_unused), .wr_data_i(tres),
-    .rd_valid_o(tx_fifo_valid), .rd_ready_i(pop && head_tex), .rd_data_o(tx_data));
+    .rd_valid_o(tx_fifo_valid), .rd_ready_i(pop && head_tex), .rd_data_o(tx_data)
+`ifdef FORMAL
+    , .f_count_o(f_t_cnt), .f_entries_o(f_t_ent)
+`endif
+  );
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_surface_fifo (
     .clk_i, .rst_ni, .wr_valid_i(sf_valid), .wr_ready_o(sf_wr_ready_unused), .wr_data_i(sres),
-    .rd_valid_o(sf_fifo_valid), .rd_ready_i(pop && head_surf), .rd_data_o(sf_data));
+    .rd_valid_o(sf_fifo_valid), .rd_ready_i(pop && head_surf), .rd_data_o(sf_data)
+`ifdef FORMAL
+    , .f_count_o(f_s_cnt), .f_entries_o(f_s_ent)
+`endif
+  );
   rpu_fifo #(.Width(2), .Log2Depth(FifoLog2)) u_order_fifo (
     .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(o_wr_ready_unused),
     .wr_data_i({item_q[ItSurfO], seg_q[SegTexO] && !item_q[ItSurfO]}), .rd_valid_o(o_valid),
-    .rd_ready_i(pop), .rd_data_o(head_kind));
+    .rd_ready_i(pop), .rd_data_o(head_kind)
+`ifdef FORMAL
+    , .f_count_o(f_o_cnt), .f_entries_o(f_o_ent)
+`endif
+  );
   wire unused_fifo = ^{c_wr_ready_unused, tx_wr_ready_unused, sf_wr_ready_unused,
                        o_wr_ready_unused, sf_ready_unused};
   wire [ResW-1:0] head = head_surf ? sf_data : head_tex ? tx_data : c_data;
@@ -526,27 +614,189 @@ module rpu_top #(
       end
     end
   end
-  // Tracked item: f_pick (free) chooses one accepted item; its pixel, segment and last bit must
-  // come back with its id.
+  // Tracked item: f_pick (free) chooses one accepted item; f_t_ahead counts the items in front
+  // of it (accepted, not delivered). It must come back when none is left in front, with its id,
+  // pixel, segment, last bit, surface bit and piece (a curve's or texture's result says piece 0).
   (* anyseq *) wire f_pick;
   reg                f_track, f_done;
   reg [IdW-1:0]      f_t_id;
-  reg [2*IdxW+SegAddrW+3:0] f_t_tag;
+  reg [FifoLog2+1:0] f_t_ahead;
+  reg [2*IdxW+SegAddrW+3:0] f_t_tag;   // {piece, surf, last, i, j, seg}
+  localparam integer FtW = 2 * IdxW + SegAddrW + 1;   // {last, i, j, seg}
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       f_track <= 1'b0;
       f_done  <= 1'b0;
     end else if (f_port && f_pick && !f_track && !f_done) begin
-      f_track <= 1'b1;
-      f_t_id  <= item_id_i;
-      f_t_tag <= {item_piece_i, item_surf_i, item_last_i, item_i_i, item_j_i, item_seg_i};
-    end else if (f_track && pop && res_id_o == f_t_id) begin
-      f_track <= 1'b0;
-      f_done  <= 1'b1;
+      f_track   <= 1'b1;
+      f_t_id    <= item_id_i;
+      f_t_ahead <= f_out - {{(FifoLog2+1){1'b0}}, pop};
+      f_t_tag   <= {item_piece_i, item_surf_i, item_last_i, item_i_i, item_j_i, item_seg_i};
+    end else if (f_track && pop) begin
+      if (f_t_ahead == {(FifoLog2+2){1'b0}}) begin
+        f_track <= 1'b0;
+        f_done  <= 1'b1;
+      end
+      f_t_ahead <= f_t_ahead - 1'b1;
     end
   end
-  always @(*) if (rst_ni && f_track && res_valid_o && res_id_o == f_t_id)
-    assert({res_piece_o, res_surf_o, res_last_o, res_i_o, res_j_o, res_seg_o} == f_t_tag);
+  always @(*) if (rst_ni && f_track) begin
+    assert(f_t_ahead < f_out);
+    assert(f_t_id == f_pop_id + f_t_ahead[IdW-1:0]);
+    if (res_valid_o && f_t_ahead == {(FifoLog2+2){1'b0}}) begin
+      assert(res_id_o == f_t_id);
+      assert({res_last_o, res_i_o, res_j_o, res_seg_o} == f_t_tag[0 +: FtW]);
+      assert(res_surf_o == f_t_tag[FtW]);
+      assert(res_piece_o == (res_surf_o ? f_t_tag[FtW+1 +: 2] : 2'b00));
+    end
+  end
+  always @(*) if (rst_ni) assert(!(f_track && f_done));
+
+`ifdef RPU_FORMAL_TOP
+  // ---- Induction invariants: every item is in one place, in order, and its kind is known ----
+  // The items accepted and not delivered have positions 0, 1, … (0: the next result), and an
+  // item's id is f_pop_id + its position. Input register: positions used_q, used_q + 1; stage 0:
+  // position f_o_cnt (its kind is written into the order FIFO this cycle); the ray generator's
+  // queue: the f_rg_cnt positions below that; every position below f_lim has left the ray
+  // generator, and the order FIFO's entry p is the kind of the item at position p. Each path
+  // (its queue, then its result FIFO; the surface path's descriptor stage first) holds its items
+  // in increasing position, each where the order FIFO says its kind is, and as many as the order
+  // FIFO counts of that kind below f_lim: so the paths hold exactly the items below f_lim, each
+  // once, and the head of the kind the order FIFO names is position 0 (the id f_pop_id).
+  localparam integer FE = Depth + 1;          // entries of an rpu_fifo
+  localparam integer CW = FifoLog2 + 2;       // their count's width
+  localparam integer QW = ItW + 1;            // the ray generator queue's entry: {item, tex}
+  reg [CW-1:0]  f_lim, f_p, f_prev, f_n0, f_n1, f_n2;
+  reg           f_have;
+  reg [ItW-1:0] f_w;
+  reg [1:0]     f_kind, f_at;
+  integer       f_k, f_q;
+`define RPU_F_POS(w) ({{(CW-IdW){1'b0}}, (w[ItIdO +: IdW]) - f_pop_id})
+  // f_at: the order FIFO's entry at position p (constant indices: no multiplier in the proof).
+`define RPU_F_KIND_AT(p) \
+        f_at = 2'b11; \
+        for (f_q = 0; f_q < FE; f_q = f_q + 1) if ((p) == f_q[CW-1:0]) f_at = f_o_ent[2*f_q +: 2];
+  // A path's item word w of kind KIND (2'b00 curve, 01 texture, 10 surface), next in its path.
+`define RPU_F_PATH(w, KIND) \
+      begin \
+        f_p = `RPU_F_POS(w); \
+        assert(f_p < f_lim); \
+        `RPU_F_KIND_AT(f_p) \
+        assert(f_at == (KIND)); \
+        if ((KIND) == 2'b10) assert(w[ItSurfO]); \
+        if (f_have) assert(f_p > f_prev); \
+        f_prev = f_p; \
+        f_have = 1'b1; \
+        if (f_track && f_p == f_t_ahead) begin \
+          assert({w[ItLastO], w[0 +: ItIdO]} == f_t_tag[0 +: FtW]); \
+          if ((KIND) == 2'b10) assert(w[ItSurfO +: 3] == f_t_tag[FtW +: 3]); \
+          else assert(!f_t_tag[FtW]); \
+        end \
+      end
+  always @(*) begin
+    f_lim = {CW{1'b0}}; f_p = {CW{1'b0}}; f_prev = {CW{1'b0}}; f_have = 1'b0;
+    f_n0 = {CW{1'b0}}; f_n1 = {CW{1'b0}}; f_n2 = {CW{1'b0}}; f_w = {ItW{1'b0}}; f_kind = 2'b00;
+    f_at = 2'b00;
+    if (rst_ni) begin
+      // Counts: the input register holds f_in items, the credit count is stage 0 plus the order
+      // FIFO, which counts every item past stage 0 once.
+      assert({1'b0, f_in_cnt} == {1'b0, f_in});
+      assert({1'b0, used_q} == f_o_cnt + {{(CW-1){1'b0}}, v0_q});
+      // (summed in 8 bits: a wrapped sum would let a full set of FIFOs pass for empty ones)
+      assert({4'd0, f_o_cnt} == {4'd0, f_rg_cnt} + {4'd0, f_cv_cnt} + {4'd0, f_tx_cnt}
+                                + {4'd0, f_sf_cnt} + {4'd0, f_c_cnt} + {4'd0, f_t_cnt}
+                                + {4'd0, f_s_cnt} + {{(CW+3){1'b0}}, sf_v_q});
+      assert(f_acc_id == f_pop_id + f_out[IdW-1:0]);
+      f_lim = f_o_cnt - f_rg_cnt;
+      // The input register: positions used_q, used_q + 1 (the output register's item first).
+      for (f_k = 0; f_k < 2; f_k = f_k + 1)
+        if (f_k < f_in) begin
+          f_w = f_in_ent[f_k*ItW +: ItW];
+          f_p = {1'b0, used_q} + f_k[CW-1:0];
+          assert(f_w[ItIdO +: IdW] == f_pop_id + f_p[IdW-1:0]);
+          if (f_track && f_p == f_t_ahead)
+            assert({f_w[ItPcO +: 2], f_w[ItSurfO], f_w[ItLastO], f_w[0 +: ItIdO]} == f_t_tag);
+        end
+      // Stage 0: position f_o_cnt.
+      if (v0_q) begin
+        assert(item_q[ItIdO +: IdW] == f_pop_id + f_o_cnt[IdW-1:0]);
+        if (f_track && f_o_cnt == f_t_ahead)
+          assert({item_q[ItPcO +: 2], item_q[ItSurfO], item_q[ItLastO], item_q[0 +: ItIdO]} == f_t_tag);
+      end
+      // The ray generator's queue: positions f_lim … f_o_cnt − 1, kinds as in the order FIFO.
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_rg_cnt) begin
+          f_w    = f_rg_ent[f_k*QW + 1 +: ItW];
+          f_kind = {f_w[ItSurfO], f_rg_ent[f_k*QW] && !f_w[ItSurfO]};
+          f_p    = f_lim + f_k[CW-1:0];
+          assert(f_w[ItIdO +: IdW] == f_pop_id + f_p[IdW-1:0]);
+          `RPU_F_KIND_AT(f_p)
+          assert(f_at == f_kind);
+          if (f_track && f_p == f_t_ahead)
+            assert({f_w[ItPcO +: 2], f_w[ItSurfO], f_w[ItLastO], f_w[0 +: ItIdO]} == f_t_tag);
+        end
+      // The order FIFO: no fourth kind; the kinds below f_lim counted.
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_o_cnt) begin
+          assert(f_o_ent[2*f_k +: 2] != 2'b11);
+          if (f_k < f_lim) begin
+            if (f_o_ent[2*f_k +: 2] == 2'b00) f_n0 = f_n0 + 1'b1;
+            if (f_o_ent[2*f_k +: 2] == 2'b01) f_n1 = f_n1 + 1'b1;
+            if (f_o_ent[2*f_k +: 2] == 2'b10) f_n2 = f_n2 + 1'b1;
+          end
+        end
+      assert({1'b0, f_n0} == {1'b0, f_c_cnt} + {1'b0, f_cv_cnt});
+      assert({1'b0, f_n1} == {1'b0, f_t_cnt} + {1'b0, f_tx_cnt});
+      assert({2'b0, f_n2} == {2'b0, f_s_cnt} + {2'b0, f_sf_cnt} + {{(CW+1){1'b0}}, sf_v_q});
+      // Curve path: its result FIFO (oldest first), then its queue. A curve or texture
+      // record's item says piece 0, no surface.
+      f_have = 1'b0;
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_c_cnt) begin
+          f_w = f_c_ent[f_k*ResW + RsItO +: ItW];
+          assert(f_w[ItSurfO +: 3] == 3'b000);
+          `RPU_F_PATH(f_w, 2'b00)
+        end
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_cv_cnt) begin
+          f_w = {3'b000, f_cv_ent[f_k*ItBW +: ItBW]};
+          `RPU_F_PATH(f_w, 2'b00)
+        end
+      // Texture path.
+      f_have = 1'b0;
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_t_cnt) begin
+          f_w = f_t_ent[f_k*ResW + RsItO +: ItW];
+          assert(f_w[ItSurfO +: 3] == 3'b000);
+          `RPU_F_PATH(f_w, 2'b01)
+        end
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_tx_cnt) begin
+          f_w = {3'b000, f_tx_ent[f_k*ItBW +: ItBW]};
+          `RPU_F_PATH(f_w, 2'b01)
+        end
+      // Surface path: result FIFO, queue, then the descriptor stage.
+      f_have = 1'b0;
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_s_cnt) begin
+          f_w = f_s_ent[f_k*ResW + RsItO +: ItW];
+          `RPU_F_PATH(f_w, 2'b10)
+        end
+      for (f_k = 0; f_k < FE; f_k = f_k + 1)
+        if (f_k < f_sf_cnt) begin
+          f_w = f_sf_ent[f_k*(ItW+PrimW) + PrimW +: ItW];
+          `RPU_F_PATH(f_w, 2'b10)
+        end
+      if (sf_v_q) begin
+        f_w = sf_it_q;
+        `RPU_F_PATH(f_w, 2'b10)
+      end
+    end
+  end
+`undef RPU_F_PATH
+`undef RPU_F_KIND_AT
+`undef RPU_F_POS
+`endif
   always @(posedge clk_i) begin
     if (f_past_valid && $past(rst_ni) && rst_ni) begin
       // AXI-Stream: a result, or a pixel, stays valid with the same tags until taken.

@@ -1,21 +1,23 @@
 # Formal checks (scripts/formal.sh, docs/verification.md), label `formal`:
 #   formal_smoke  BMC + k-induction + covers of rpu_fifo, rpu_resolve, rpu_surface_admit, and
-#                 rpu_top at the reduced parameter set to a short BMC depth (the full depth,
-#                 covering the pipeline latency, is `scripts/formal.sh top`: several minutes);
-#   formal_faults two mutated rpu_fifo copies that must yield a counterexample (the proofs can
-#                 fail).
-# Needs yosys-smtbmc and z3 (scripts/setup.sh); without them the tests are not registered.
+#                 rpu_top at the reduced parameter set: its BMC to a short depth, its stream
+#                 properties proved by k-induction (the deeper BMC and the covers:
+#                 `scripts/formal.sh top`);
+#   formal_faults two mutated rpu_fifo copies and a mutated rpu_top that must yield a
+#                 counterexample (the proofs can fail).
+# Needs yosys-smtbmc, z3 and cvc5 (scripts/setup.sh); without them the tests are not registered.
 find_program(RPU_SMTBMC yosys-smtbmc)
 find_program(RPU_Z3 z3)
-if(RPU_SMTBMC AND RPU_Z3)
+find_program(RPU_CVC5 cvc5)
+if(RPU_SMTBMC AND RPU_Z3 AND RPU_CVC5)
   add_test(NAME formal_smoke
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/formal.sh --smoke
                    --out ${CMAKE_BINARY_DIR}/formal-smoke fifo resolve admit top)
   add_test(NAME formal_faults
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/formal.sh
-                   --out ${CMAKE_BINARY_DIR}/formal-faults fifo_bug_full fifo_bug_stale)
+                   --out ${CMAKE_BINARY_DIR}/formal-faults fifo_bug_full fifo_bug_stale top_bug_lost)
   set_tests_properties(formal_smoke formal_faults PROPERTIES LABELS formal)
   set_tests_properties(formal_smoke PROPERTIES TIMEOUT 900)
 else()
-  message(STATUS "yosys-smtbmc or z3 not found: formal tests not registered")
+  message(STATUS "yosys-smtbmc, z3 or cvc5 not found: formal tests not registered")
 endif()
