@@ -1,4 +1,6 @@
 // TopPorts over a Verilated C++ model of rpu_top (any parameters: widths come from TopWidths).
+// Each instance owns its VerilatedContext; in a coverage build each writes its own coverage files
+// (coverage_file.h: after the first reset and at finish()).
 #pragma once
 
 #include <verilated.h>
@@ -6,6 +8,7 @@
 #include <verilated_fst_c.h>
 #endif
 
+#include "coverage_file.h"
 #include "port_bits.h"
 #include "top_ports.h"
 
@@ -22,6 +25,7 @@ class VerilatedPorts final : public TopPorts {
       ctx_->randSeed(static_cast<int>(x_seed));
     }
     top_ = std::make_unique<V>(ctx_.get());
+    coverage_.set_name(CoverageFile::program() + "-" + top_->modelName());
     top_->rst_ni = 0;
     top_->cam_we_i = 0;
     top_->seg_we_i = 0;
@@ -36,6 +40,7 @@ class VerilatedPorts final : public TopPorts {
     top_->rst_ni = 0;
     for (int k = 0; k < cycles; ++k) tick();
     top_->rst_ni = 1;
+    coverage_.mark(*ctx_);  // the toggle base: power-up values and the first reset left out
   }
   void write_camera(const Bits& data) override {
     put(top_->cam_data_i, data);
@@ -123,6 +128,7 @@ class VerilatedPorts final : public TopPorts {
     if (finished_) return;
     finished_ = true;
     top_->final();
+    coverage_.write(*ctx_);
 #if VM_TRACE_FST
     if (fst_) fst_->close();
 #endif
@@ -149,6 +155,7 @@ class VerilatedPorts final : public TopPorts {
 #if VM_TRACE_FST
   std::unique_ptr<VerilatedFstC> fst_;
 #endif
+  CoverageFile coverage_;  // RPU_COVERAGE_DIR, in a coverage build
   bool finished_ = false;
 };
 

@@ -20,6 +20,7 @@
 #include <type_traits>
 
 #include "Vrpu_top_sc.h"
+#include "coverage_file.h"
 #include "stream_file.h"
 
 using namespace rpu;
@@ -177,6 +178,7 @@ SC_MODULE(Loader) {
   Wires* w = nullptr;
   const sim::FrameSchedule* f = nullptr;
   Clock* clock = nullptr;
+  sim::CoverageFile* coverage = nullptr;
   SC_CTOR(Loader) { SC_THREAD(run); }
   void cycle() { wait(w->clk.negedge_event()); }
   void reset() {
@@ -187,6 +189,9 @@ SC_MODULE(Loader) {
   void run() {
     cycle();
     reset();
+    // The toggle base of a coverage build (as the C++ harness: after the first reset). The model
+    // runs in Verilator's default context.
+    coverage->mark(*Verilated::threadContextp());
     value_t<decltype(Vrpu_top_sc::cam_data_i)> cam;
     to_sc(cam, f->camera);
     w->cam_data = cam;
@@ -363,6 +368,7 @@ int sc_main(int argc, char** argv) {
     Wires w;
     Vrpu_top_sc dut("dut");
     w.bind(dut);
+    sim::CoverageFile coverage(sim::CoverageFile::program() + "-" + dut.modelName());
     Clock clock;
     sim::StreamRecord rec;
     sc_fifo<sim::WorkItem> items("items", static_cast<int>(f.items.size()) + 1);
@@ -373,6 +379,7 @@ int sc_main(int argc, char** argv) {
     loader.w = &w;
     loader.f = &f;
     loader.clock = &clock;
+    loader.coverage = &coverage;
     Source source("source");
     source.in(items);
     source.w = &w;
@@ -400,6 +407,7 @@ int sc_main(int argc, char** argv) {
     rec.stats.sim_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     dut.final();
+    coverage.write(*Verilated::threadContextp());
     // As the C++ harness: cycles up to and including the one that took the last pixel.
     rec.stats.cycles = rec.stats.timed_out ? recorder.limit : psink.last_index + 1;
     rec.stats.load_cycles = 1 + f.segments.size() + f.surfaces.size();

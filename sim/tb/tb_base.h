@@ -7,7 +7,9 @@
 //       vector count (tb.vectors(default), RPU_VECTORS), clock (tick), reset, the FST trace on
 //       request (+trace, or RPU_TRACE=1: each failing test keeps <test>.fst in RPU_TRACE_DIR or
 //       the working directory), FAILURE lines (fail) and the "matched N items" line (pass, with
-//       the longest latency of run()'s items).
+//       the longest latency of run()'s items); in a coverage build, the model's line and toggle
+//       coverage into RPU_COVERAGE_DIR (harness/coverage_file.h: the counts after the first reset
+//       and at the end).
 //   tb.run(items, stream)  plays a list of items through a valid_i/valid_o unit (reset first)
 //       and checks every result, in order, against its item: the source offers the next item with
 //       random gaps (junk on every input in between), holds it until ready_o takes it where the
@@ -40,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "coverage_file.h"
 #include "port_bits.h"
 #include "tb_common.h"
 
@@ -257,7 +260,11 @@ template <class Top>
 class Testbench {
  public:
   Testbench(const char* name, int argc, char** argv)
-      : name_(name), seed(test_seed(name)), rng(seed), drive_rng_(seed ^ 0x9E3779B97F4A7C15ull) {
+      : name_(name),
+        seed(test_seed(name)),
+        rng(seed),
+        drive_rng_(seed ^ 0x9E3779B97F4A7C15ull),
+        coverage_(argc > 0 ? std::filesystem::path(argv[0]).filename().string() : name) {
     const std::uint64_t x_seed = env_u64("RPU_X_SEED", 20261122);
     std::printf("%s: initial register values from x-seed %llu (set RPU_X_SEED for others)\n",
                 name, static_cast<unsigned long long>(x_seed));
@@ -274,6 +281,7 @@ class Testbench {
   }
   ~Testbench() {
     top_->final();
+    coverage_.write(*ctx_);
 #if VM_TRACE_FST
     if (fst_) {
       fst_->close();
@@ -312,6 +320,7 @@ class Testbench {
     for (int k = 0; k < cycles; ++k) tick();
     top_->rst_ni = 1;
     was_reset_ = true;
+    coverage_.mark(*ctx_);  // the toggle base: power-up values and the first reset left out
   }
 
   // "FAILURE: ..." (the trace flushed and kept); returns 1, the exit status.
@@ -534,6 +543,7 @@ class Testbench {
 
  private:
   std::mt19937_64 drive_rng_;  // valid gaps, backpressure, junk and tags
+  CoverageFile coverage_;       // RPU_COVERAGE_DIR, in a coverage build
   std::unique_ptr<VerilatedContext> ctx_;
   std::unique_ptr<Top> top_;
 #if VM_TRACE_FST
