@@ -21,12 +21,14 @@
 #   -k DIR              keep the Yosys scripts, logs and reports in DIR (default: a temporary dir)
 #   -n                  dry run: print each module's configuration and files, run nothing
 #   -P DIR              no synthesis: tabulate again the files an earlier run kept in DIR (-k)
-#   -H                  hierarchical: synth_xilinx without -flatten, each distinct submodule
-#                       synthesised once, totals from `stat -top` (the design hierarchy's counts
-#                       times the instances); no cross-module optimisation, no longest path
-#                       and no sta.
-#                       Makes rpu_ip and rpu_top at the defaults (26 candidate evaluators)
-#                       feasible in minutes instead of hours
+#   -H                  hierarchical, through the cached flow scripts/synth_hier.py: each
+#                       distinct derived module synthesised once in its own Yosys process (-j
+#                       at a time), the counts summed over the instance tree; cached in
+#                       build/synth_cache (-C moves it), so a second run synthesises nothing
+#                       and an edit of one unit re-runs that unit. No cross-module
+#                       optimisation and no longest path; sta is the slowest module's own
+#                       logic. The modules named run one after another, each with -j jobs
+#   -C DIR              -H: the cache directory (default build/synth_cache)
 #   -h                  this help
 # The Markdown table goes to stdout, progress to stderr. Exit status 1 if a run failed (an
 # error, not a timeout or a skipped module).
@@ -86,6 +88,7 @@ ALL=(rpu_resolve rpu_fifo rpu_mul rpu_sqrt rpu_chord rpu_div rpu_capture rpu_cur
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
 jobs_max=1 tlimit=1200 mlimit=8000 md_out="" csv_out="" keep="" reduced_mode="" dry=0 reparse="" hier=0
+hier_cache=""
 declare -A OVERRIDE=()
 specs=()
 while (($#)); do
@@ -100,6 +103,7 @@ while (($#)); do
     -n) dry=1; shift ;;
     -P) reparse=$2; shift 2 ;;
     -H) hier=1; shift ;;
+    -C) hier_cache=$2; shift 2 ;;
     -r|--reduced) reduced_mode=only; shift ;;
     -R) reduced_mode=both; shift ;;
     -G) m=${2%%:*}; OVERRIDE[$m]="${OVERRIDE[$m]:-} ${2#*:}"; shift 2 ;;
@@ -144,6 +148,9 @@ stop_runs() {
   for f in "$work"/*.pid; do
     [[ -e $f ]] && kill -TERM -- "-$(cat "$f")" 2>/dev/null
   done
+  for f in "$work"/*.flowpid; do
+    [[ -e $f ]] && kill -TERM "$(cat "$f")" 2>/dev/null
+  done
   echo "yosys_report: interrupted" >&2
   exit 130
 }
@@ -169,9 +176,7 @@ rtl_read+="${rtl_sources[*]}"
 # header[2..] in order, other cell types (if any).
 tabulate() {
   local tag=$1 mod=$2 config=$3 secs=$4
-  local h=0
-  [[ -e $work/$tag.hier ]] && h=1
-  awk -v mod="$mod" -v config="$config" -v secs="$secs" -v work="$work" -v tag="$tag" -v hier="$h" '
+  awk -v mod="$mod" -v config="$config" -v secs="$secs" -v work="$work" -v tag="$tag" '
     function load(cls,   f, line) {
       f = work "/" tag ".cells." cls
       while ((getline line < f) > 0) {
@@ -188,12 +193,7 @@ tabulate() {
       lr["RAM32X1D"] = 2; lr["RAM64X1D"] = 2; lr["RAM128X1D"] = 4; lr["RAM32M"] = 4
       lr["RAM64M"] = 4; lr["RAM32M16"] = 8; lr["RAM64M8"] = 8; lr["RAM512X1S"] = 8
       f = work "/" tag ".stat"
-      # Hierarchical: only the design-hierarchy totals count (after its "Number of cells").
-      counting = !hier
       while ((getline line < f) > 0) {
-        if (hier && line ~ /=== design hierarchy ===/) { section = 1; continue }
-        if (hier && section && line ~ /Number of cells:/) { counting = 1; continue }
-        if (!counting) continue
         if (line ~ /Estimated number of LCs:/) { n = split(line, a, " "); lcs = a[n]; continue }
         n = split(line, a, " ")
         if (n != 2 || a[2] !~ /^[0-9]+$/) continue
@@ -213,7 +213,7 @@ tabulate() {
       }
       close(f)
       f = work "/" tag ".ltp"
-      len = hier ? "- (per module)" : "?"
+      len = "?"
       while ((getline line < f) > 0) {
         if (match(line, /\(length=-?[0-9]+\)/)) { len = substr(line, RSTART + 8, RLENGTH - 9); continue }
         if (line !~ /\(via .*\)[ \t\r]*$/) continue
@@ -227,7 +227,7 @@ tabulate() {
       # sta: the latest arrival time in ps (clock-to-out of the launching cell plus the cell
       # delays of the Xilinx specify library, no routing, no setup time).
       f = work "/" tag ".sta"
-      sta = hier ? "- (per module)" : "?"
+      sta = "?"
       while ((getline line < f) > 0)
         if (match(line, /Latest arrival time in .* is -?[0-9]+/)) {
           n = split(substr(line, RSTART, RLENGTH), a, " ")
@@ -252,6 +252,51 @@ tabulate() {
              ff, srl, lutram, dsp, bram, carry, muxf, lcs, path, sta, secs, mem
       printf "%s\n", other == "" ? "" : "\t" other
     }' </dev/null >"$work/$tag.row"
+}
+
+# -H: one module through the cached hierarchical flow (scripts/synth_hier.py); its JSON report
+# becomes the row (LUT, INV, FF, SRL, LUTRAM, DSP48E1, BRAM36, CARRY4, MUXF7/8, Est. LCs summed
+# over the instance tree; sta: the slowest module's own logic; Yosys s: the flow's wall time).
+run_hier() {
+  local tag=$1 mod=$2 config=$3 params=$4 p rc args=()
+  for p in $params; do args+=(-G "$p"); done
+  if [[ -n $hier_cache ]]; then args+=(--cache "$hier_cache"); fi
+  if ((dry)); then
+    echo "$mod: $config: scripts/synth_hier.py ${args[*]} $mod"
+    return 0
+  fi
+  echo "[$(date +%T)] $mod: started ($config)" >&2
+  set +e
+  python3 "$root/scripts/synth_hier.py" -j "$jobs_max" -t "$tlimit" -m "$mlimit" "${args[@]}" \
+    --json "$work/$tag.json" --md "$work/$tag.md" "$mod" >"$work/$tag.out" 2>"$work/$tag.log" &
+  echo $! >"$work/$tag.flowpid"  # stop_runs ends it (it ends its own Yosys runs)
+  wait $!
+  rc=$?
+  rm -f "$work/$tag.flowpid"
+  set -e
+  python3 - "$work/$tag.json" "$mod" "$config" "$rc" "$work/$tag.log" >"$work/$tag.row" <<'PY'
+import json, sys
+path, mod, config, rc, log = sys.argv[1:]
+try:
+    r = json.load(open(path))
+except (OSError, ValueError):
+    last = [l for l in open(log, errors="replace").read().splitlines() if l.strip()][-1:]
+    print(f"{mod}\t{config}\terror: {(last or ['exit ' + rc])[0][:120]}")
+    sys.exit()
+if r["status"] != "ok":
+    first = r["failures"][0]
+    kind = "timeout" if ": timeout" in first else \
+        "out of memory" if "out of memory" in first else "error"
+    print(f"{mod}\t{config}\t{kind}: {first[:120]}")
+    sys.exit()
+t = r["totals"]
+sta = f"{r['sta_ns']:.2f}" if r["sta_ns"] is not None else "-"
+bram = t["bram36"] if t["bram36"] != int(t["bram36"]) else int(t["bram36"])
+print("\t".join(str(v) for v in [
+    mod, config, "ok", t["lut"], t["inv"], t["ff"], t["srl"], t["lutram"], t["dsp"], bram,
+    t["carry4"], t["muxf"], t["est_lcs"], "- (per module)", sta, round(r["wall_seconds"]), "-"]))
+PY
+  echo "[$(date +%T)] $mod: $(cut -f3 "$work/$tag.row" | cut -c1-80)" >&2
 }
 
 # One module: synthesise, write $work/$tag.row (tab-separated fields of the table).
@@ -290,16 +335,9 @@ run_one() {
   sel="$sel $mod/t:DSP48E1 r:MREG>0 %i %u $mod/t:DSP48E1 r:PREG>0 %i %u"
   local comb="r:MREG<1 %i r:PREG<1 %i"
   if ((hier)); then
-    # Totals over the hierarchy; no cell lists, no ltp and no sta (paths stop at module
-    # boundaries).
-    cat >"$work/$tag.ys" <<EOF
-read_verilog -defer $rtl_read
-hierarchy -check -top $mod$chparam
-synth_xilinx -noiopad -noclkbuf -top $mod
-tee -q -o $work/$tag.stat stat -tech xilinx -top $mod
-EOF
-    : >"$work/$tag.hier"
-  else
+    run_hier "$tag" "$mod" "$config" "$params"
+    return 0
+  fi
   cat >"$work/$tag.ys" <<EOF
 read_verilog -defer $rtl_read
 hierarchy -check -top $mod$chparam
@@ -319,7 +357,6 @@ chtype -set RPU_LTP_DSP48E1_B $mod/t:DSP48E1 r:BREG>0 %i $comb
 select -set breaks $sel
 tee -q -o $work/$tag.ltp ltp -noff $mod/* @breaks %d
 EOF
-  fi
   if ((dry)); then
     echo "$spec: $config: rtl/rpu.f, top $mod"
     return 0
@@ -387,7 +424,8 @@ done
 idx=0
 for spec in "${specs[@]}"; do
   idx=$((idx + 1))
-  while (($(jobs -rp | wc -l) >= jobs_max)); do wait -n || true; done
+  # -H: one module at a time (each runs -j Yosys processes of its own).
+  while (($(jobs -rp | wc -l) >= (hier ? 1 : jobs_max))); do wait -n || true; done
   if ((dry)); then run_one "$idx" "$spec"; continue; fi
   run_one "$idx" "$spec" &
 done
