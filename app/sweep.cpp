@@ -201,10 +201,15 @@ int run_sweep(const SweepOptions& o) {
       scn.camera.height = s.rtl_height;
       run.rtl_scene = scene::compile_scene(scn);
     }
-    if (s.yosys) run.yosys = std::make_unique<YosysRunner>(s, out / "yosys_cache");
   }
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   const unsigned threads = o.jobs > 0 ? static_cast<unsigned>(o.jobs) : hw;
+  // Each configuration's synthesis runs its derived modules on the cores left to it.
+  if (!todo.empty() && s.yosys) {
+    const unsigned parallel = std::min(threads, static_cast<unsigned>(todo.size()));
+    run.yosys = std::make_unique<YosysRunner>(s, out / "yosys_cache",
+                                              static_cast<int>(std::max(1u, hw / parallel)));
+  }
   if (s.rtl && s.rtl_build) run.external = build_cosim(todo, out, static_cast<int>(threads));
 
   size_t done = 0;

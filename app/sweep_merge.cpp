@@ -86,7 +86,8 @@ int merge_results(const SweepSpec& s, const std::vector<SweepConfig>& configs,
   for (const char* c : {"K", "pixels_total", "ref_vs_float_ip_total", "ref_vs_float_total",
                         "rtl_status", "rtl_cycles", "rtl_latency_cycles", "rtl_items",
                         "rtl_items_per_cycle", "yosys_status", "yosys_module", "yosys_basis",
-                        "lut", "ff", "dsp", "bram", "carry4", "longest_path_levels"})
+                        "lut_sites", "lut", "srl", "lutram", "ff", "dsp", "bram", "carry4",
+                        "sta_ns"})
     cols.push_back(c);
   std::string csv;
   for (size_t k = 0; k < cols.size(); ++k) csv.append(k ? "," : "").append(cols[k]);

@@ -98,13 +98,13 @@ struct Candidate {
   double luts = 0, mismatches = 0;
 };
 
-// The undominated ok rows in (LUTs, ref_vs_float_total), sorted. Quadratic, which is nothing for
+// The undominated ok rows in (LUT sites, ref_vs_float_total), sorted. Quadratic, which is nothing for
 // a sweep's few hundred configurations and keeps the definition visible.
 std::vector<Candidate> pareto_candidates(const std::vector<const json*>& rows) {
   std::vector<Candidate> all;
   for (size_t k = 0; k < rows.size(); ++k) {
     const json& row = *rows[k];
-    const auto luts = number(row, "lut");
+    const auto luts = number(row, "lut_sites");
     const auto mismatches = number(row, "ref_vs_float_total");
     if (is_ok(row) && luts && mismatches) all.push_back({k, row_id(row, k), *luts, *mismatches});
   }
@@ -487,7 +487,7 @@ Figure accuracy_vs_luts(const std::vector<const json*>& rows, const std::vector<
                 .radius = 5};
   for (size_t r = 0; r < rows.size(); ++r) {
     const json& row = *rows[r];
-    const auto luts = number(row, "lut");
+    const auto luts = number(row, "lut_sites");
     const auto mismatches = number(row, "ref_vs_float_total");
     if (!is_ok(row) || !luts || !mismatches) continue;
     std::string label = value_text(field(row, "n")) + "/" + value_text(field(row, "n1"));
@@ -496,12 +496,12 @@ Figure accuracy_vs_luts(const std::vector<const json*>& rows, const std::vector<
                                       [&](const Candidate& c) { return c.row == r; });
     (on_front ? pareto : others)
         .points.push_back({*luts, *mismatches, label,
-                           point_tooltip(row, r, "LUTs", *luts, "mismatched pixels", *mismatches) +
+                           point_tooltip(row, r, "LUT sites", *luts, "mismatched pixels", *mismatches) +
                                (on_front ? " (Pareto front)" : "")});
   }
-  Figure figure{title + ": accuracy vs LUTs", "LUTs",
-                "no ok configuration has both LUTs and ref_vs_float_total", false, {}};
-  Panel panel{"mismatched pixels (ref vs float, all scenes) against LUTs",
+  Figure figure{title + ": accuracy vs LUT sites", "LUT sites",
+                "no ok configuration has both LUT sites and ref_vs_float_total", false, {}};
+  Panel panel{"mismatched pixels (ref vs float, all scenes) against LUT sites",
               "mismatched pixels", true, {}};
   if (!others.points.empty()) panel.series.push_back(std::move(others));
   if (!pareto.points.empty()) panel.series.push_back(std::move(pareto));
@@ -511,9 +511,9 @@ Figure accuracy_vs_luts(const std::vector<const json*>& rows, const std::vector<
 
 Figure luts_latency_vs_n1(const std::vector<const json*>& rows, const std::string& title) {
   return line_figure(rows, "n1", {"n"},
-                     {{"lut", "LUTs against n1", "LUTs"},
+                     {{"lut_sites", "LUT sites against n1", "LUT sites"},
                       {"rtl_latency_cycles", "latency against n1", "latency (cycles)"}},
-                     {title + ": LUTs and latency vs n1", "n1",
+                     {title + ": LUT sites and latency vs n1", "n1",
                       "no ok configuration has this measurement", false, {}},
                      /*y_from_zero=*/false);
 }
@@ -562,7 +562,7 @@ std::string_view status_class(const json& row) {
 constexpr std::string_view kMeasurements[] = {
     "pixels_total", "ref_vs_float_ip_total", "ref_vs_float_total", "rtl_status", "rtl_cycles",
     "rtl_latency_cycles", "rtl_items_per_cycle", "rtl_items", "yosys_status", "yosys_module",
-    "lut", "ff", "dsp", "bram", "carry4", "longest_path_levels"};
+    "lut_sites", "lut", "srl", "lutram", "ff", "dsp", "bram", "carry4", "sta_ns"};
 
 std::string results_table(const std::vector<const json*>& rows, const std::vector<Candidate>& front) {
   std::string html = "<div class=\"wide\"><table>\n<tr><th>config_id</th><th>status</th>";
@@ -590,17 +590,17 @@ std::string results_table(const std::vector<const json*>& rows, const std::vecto
 
 std::string pareto_table(const std::vector<const json*>& rows, const std::vector<Candidate>& front) {
   if (front.empty())
-    return "<p>No ok configuration has both LUTs and ref_vs_float_total, so there is no front.</p>\n";
+    return "<p>No ok configuration has both LUT sites and ref_vs_float_total, so there is no front.</p>\n";
   std::string html = "<table>\n<tr><th>config_id</th>";
   for (std::string_view p : sweep_parameters()) html += fmt::format("<th>{}</th>", p);
-  html += "<th>LUTs</th><th>ref vs float mismatched pixels</th><th>ref vs float-ip mismatched "
+  html += "<th>LUT sites</th><th>ref vs float mismatched pixels</th><th>ref vs float-ip mismatched "
           "pixels</th><th>latency (cycles)</th></tr>\n";
   for (const Candidate& c : front) {
     const json& row = *rows[c.row];
     html += fmt::format("<tr><td>{}</td>", escape_html(c.id));
     for (std::string_view p : sweep_parameters())
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, p)));
-    for (std::string_view m : {"lut", "ref_vs_float_total", "ref_vs_float_ip_total", "rtl_latency_cycles"})
+    for (std::string_view m : {"lut_sites", "ref_vs_float_total", "ref_vs_float_ip_total", "rtl_latency_cycles"})
       html += fmt::format("<td class=\"num\">{}</td>", cell(field(row, m)));
     html += "</tr>\n";
   }
@@ -645,10 +645,11 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
   html += "<div class=\"gallery\">\n";
   const std::pair<std::string_view, std::string_view> plots[] = {
       {kAccuracyVsLutsSvg,
-       "Accuracy against area: mismatched pixels of ref vs float over all scenes against LUTs, "
-       "labelled n/n1; the Pareto front highlighted."},
+       "Accuracy against area: mismatched pixels of ref vs float over all scenes against the "
+       "LUT sites of the whole synthesised module (yosys_module), labelled n/n1; the Pareto "
+       "front highlighted."},
       {kLutsLatencyVsN1Svg,
-       "LUTs and RTL latency against n1, one line per n (and per value of any other parameter "
+       "LUT sites and RTL latency against n1, one line per n (and per value of any other parameter "
        "the sweep varies)."},
       {kMismatchesVsCoordWSvg,
        "Mismatched pixels against coord_w, ref vs float and ref vs float-ip, one line per (n, n1) "
@@ -665,8 +666,8 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
             "sample).</p>\n";
 
   html += "<h2>Pareto front</h2>\n<p>The ok configurations no other dominates: none has at most "
-          "as many LUTs and at most as many mismatched pixels (ref vs float), and fewer of one. "
-          "Sorted by LUTs.</p>\n";
+          "as many LUT sites and at most as many mismatched pixels (ref vs float), and fewer of "
+          "one. Sorted by LUT sites.</p>\n";
   html += pareto_table(rows, front);
   html += "<h2>All configurations</h2>\n" + results_table(rows, front);
   return html + "</body>\n</html>\n";

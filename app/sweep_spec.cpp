@@ -214,7 +214,10 @@ void read_rtl(const json& r, const std::string& file, SweepSpec& s) {
 
 void read_yosys(const json& y, const std::string& file, SweepSpec& s) {
   const std::string where = at(file, "yosys");
-  if (!read_section(y, file, "yosys", {"module", "timeout", "scale"}, s.yosys)) return;
+  if (y.is_object() && y.contains("scale"))
+    throw Error(where + ".scale", "retired: the resources are the whole module's, synthesised "
+                                  "through scripts/synth_hier.py (docs/sweeps.md); remove the key");
+  if (!read_section(y, file, "yosys", {"module", "timeout"}, s.yosys)) return;
   if (y.contains("module")) {
     if (!y["module"].is_string())
       throw Error(where + ".module", "must be a string, got " + describe(y["module"]));
@@ -224,13 +227,6 @@ void read_yosys(const json& y, const std::string& file, SweepSpec& s) {
     throw Error(where + ".module", "must name an rtl/ module (rpu_...)");
   if (y.contains("timeout"))
     s.yosys_timeout = static_cast<int>(read_int(y["timeout"], where + ".timeout", 1, 7 * 24 * 3600));
-  if (y.contains("scale")) {
-    if (!y["scale"].is_string() || y["scale"] != "ip_candidates")
-      throw Error(where + ".scale", "must be \"ip_candidates\" or absent");
-    s.scale_ip_candidates = true;
-    if (s.yosys_module != "rpu_candidate")
-      throw Error(where + ".scale", "ip_candidates needs module rpu_candidate");
-  }
 }
 
 }  // namespace
@@ -321,7 +317,7 @@ std::string sweep_fingerprint(const SweepSpec& s, const LoadedScenes& scenes) {
   return hash_hex(dump_json(json({{"scenes", scenes.fingerprint}, {"w", s.width}, {"h", s.height},
                                   {"rtl", s.rtl}, {"rw", s.rtl_width}, {"rh", s.rtl_height},
                                   {"yosys", s.yosys}, {"ym", s.yosys_module},
-                                  {"scale", s.scale_ip_candidates}, {"rb", s.rtl_build}})));
+                                  {"yb", "synth_hier"}, {"rb", s.rtl_build}})));
 }
 
 std::vector<SweepConfig> expand_grid(const SweepSpec& s) {

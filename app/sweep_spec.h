@@ -50,14 +50,11 @@ struct SweepSpec {
   // Verilate configurations the rpu executable does not contain (RPU_COSIM_ONLY build under
   // DIR/rtl_build, one cosim_<id> per configuration, kept across runs).
   bool rtl_build = false;
+  // Resources: the whole module (rpu_top by default) at each configuration's parameters through
+  // the cached hierarchical synthesis flow (scripts/synth_hier.py; docs/resources.md).
   bool yosys = false;
-  std::string yosys_module = "rpu_ip_step";
-  int yosys_timeout = 3600;
-  // "scale": "ip_candidates" — the module is rpu_candidate and the row's resources are its
-  // counts times the candidate evaluators of the configuration's K-step process
-  // (K·(2^n1 − 1) + 2 unrolled, 2^n1 + 1 iterative): the dominant cost, synthesised once per
-  // width set instead of the whole IP (hours per configuration).
-  bool scale_ip_candidates = false;
+  std::string yosys_module = "rpu_top";
+  int yosys_timeout = 3600;  // per derived module
 };
 
 // Reads (rpu::read_input_file, "sweep file") and checks the sweep file. Reads no scene.

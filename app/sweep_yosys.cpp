@@ -1,9 +1,8 @@
 #include "sweep_yosys.h"
 
-#include <cerrno>
-#include <charconv>
-#include <cmath>
-#include <fstream>
+#include <unistd.h>
+
+#include <algorithm>
 #include <regex>
 #include <sstream>
 
@@ -50,131 +49,87 @@ std::vector<std::string> module_parameters(const std::string& module) {
   return names;
 }
 
-// A count from the report: a whole number, or null (empty, "timeout", too large for 64 bits).
-json count(const std::map<std::string, std::string>& m, const char* column) {
-  const auto it = m.find(column);
-  if (it == m.end()) return nullptr;
-  long long v = 0;
-  const char* end = it->second.data() + it->second.size();
-  const auto [ptr, ec] = std::from_chars(it->second.data(), end, v);
-  // Whole numbers; a fraction ("12.5 s") is cut off as before.
-  if (ec != std::errc() || (ptr != end && *ptr != '.') || v < 0) return nullptr;
-  return v;
-}
-
-// BRAM36 may be fractional (a RAMB18 is half of one).
-json fraction(const std::map<std::string, std::string>& m, const char* column) {
-  const auto it = m.find(column);
-  if (it == m.end() || it->second.empty() || !std::isdigit(static_cast<unsigned char>(it->second[0])))
-    return nullptr;
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(it->second.c_str(), &end);
-  if (errno != 0 || *end != '\0' || !std::isfinite(v)) return nullptr;
-  return v;
-}
-
 }  // namespace
 
-std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  bool quoted = false;
-  for (size_t k = 0; k < line.size(); ++k) {
-    const char c = line[k];
-    if (quoted) {
-      if (c != '"') cur += c;
-      else if (k + 1 < line.size() && line[k + 1] == '"') cur += line[++k];  // "" → "
-      else quoted = false;
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      f.push_back(cur);
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
-    }
-  }
-  f.push_back(cur);
-  return f;
-}
-
-YosysRunner::YosysRunner(const SweepSpec& spec, fs::path cache_dir)
-    : spec_(spec), cache_(std::move(cache_dir)), declared_(module_parameters(spec.yosys_module)) {}
+YosysRunner::YosysRunner(const SweepSpec& spec, fs::path cache_dir, int jobs)
+    : spec_(spec),
+      cache_(std::move(cache_dir)),
+      jobs_(std::max(1, jobs)),
+      declared_(module_parameters(spec.yosys_module)) {}
 
 void YosysRunner::measure(const SweepConfig& c, json& row) {
   const std::string& module = spec_.yosys_module;
   row["yosys_module"] = module;
-  std::vector<std::string> overrides;
+  row["yosys_basis"] = module;
+  std::vector<std::string> argv = {
+      (fs::path(RPU_SOURCE_DIR) / "scripts" / "synth_hier.py").string(), "-j",
+      std::to_string(jobs_), "-t", std::to_string(spec_.yosys_timeout), "--cache",
+      cache_.string()};
   std::string key = module;
   for (const ref::HwParamInfo& d : ref::hw_param_table()) {
     if (d.verilog.empty() ||
         std::find(declared_.begin(), declared_.end(), d.verilog) == declared_.end())
       continue;
     const std::string value = verilog_value(d, c.params);
-    overrides.push_back(fmt::format("{}:{}={}", module, d.verilog, value));
+    argv.push_back("-G");
+    argv.push_back(fmt::format("{}={}", d.verilog, value));
     key += fmt::format(" {}={}", d.verilog, value);
   }
-  const fs::path dir = cache_ / (module + "-" + hash_hex(key));
-  const fs::path csv = dir / "row.csv";
+  // One report and log per parameter set of the module; configurations that share it run the
+  // flow one after another (the second finds every derived module in the cache).
+  const fs::path runs = cache_ / "runs";
+  const fs::path base = runs / (module + "-" + hash_hex(key));
   std::mutex* mu;
   {
     std::lock_guard<std::mutex> lock(table_mu_);
-    mu = &key_mu_[dir.string()];
+    mu = &key_mu_[base.string()];
   }
   std::lock_guard<std::mutex> key_lock(*mu);
-  row["yosys_cache"] = fs::relative(dir, cache_.parent_path()).string();
   std::error_code ec;
-  if (!fs::exists(csv, ec)) {
-    fs::create_directories(dir, ec);
-    if (ec) throw Error(dir.string(), "cannot create the Yosys cache directory: " + ec.message());
-    const fs::path tmp = dir / "row.tmp";
-    fs::remove(tmp, ec);
-    std::vector<std::string> argv = {
-        (fs::path(RPU_SOURCE_DIR) / "scripts" / "yosys_report.sh").string(), "-t",
-        std::to_string(spec_.yosys_timeout), "-c", tmp.string()};
-    for (const std::string& g : overrides) {
-      argv.push_back("-G");
-      argv.push_back(g);
-    }
-    argv.push_back(module);
-    const int rc = run_child(argv, {(dir / "table.md").string(), (dir / "log.txt").string()});
-    if (rc != 0 && !fs::exists(tmp, ec))
-      throw Error("yosys", fmt::format("{} failed (status {}), see {}", module, rc,
-                                       (dir / "log.txt").string()));
-    fs::rename(tmp, csv, ec);
-    if (ec) throw Error(csv.string(), "cannot store the Yosys report: " + ec.message());
-  } else {
-    row["yosys_cached"] = true;
+  fs::create_directories(runs, ec);
+  if (ec) throw Error(runs.string(), "cannot create the Yosys cache directory: " + ec.message());
+  const fs::path report = base.string() + ".json";
+  const fs::path log = base.string() + ".log";
+  // Another process (a job of the same sweep) may run the same parameter set: each writes its
+  // own report and moves it into place.
+  const fs::path tmp = fmt::format("{}.{}.tmp", report.string(), ::getpid());
+  fs::remove(tmp, ec);
+  argv.insert(argv.end(), {"--json", tmp.string(), module});
+  row["yosys_log"] = fs::relative(log, cache_.parent_path()).string();
+  const int rc = run_child(argv, {log.string(), log.string()});
+  if (!fs::exists(tmp, ec))
+    throw Error("yosys", fmt::format("{}: scripts/synth_hier.py failed (status {}), see {}",
+                                     module, rc, log.string()));
+  fs::rename(tmp, report, ec);
+  if (ec) throw Error(report.string(), "cannot store the Yosys report: " + ec.message());
+  const json r = json::parse(read_input_file(report.string(), "Yosys report"), nullptr, false);
+  if (r.is_discarded() || !r.is_object() || !r.contains("status"))
+    throw Error(report.string(), "not a report of scripts/synth_hier.py");
+  row["yosys_derived_modules"] = r.value("derived_modules", 0);
+  row["yosys_synthesised"] = r.value("synthesised", 0);
+  row["yosys_seconds"] = r.value("wall_seconds", 0.0);
+  if (r["status"] != "ok") {
+    const std::string first = r.contains("failures") && !r["failures"].empty()
+                                  ? r["failures"][0].get<std::string>()
+                                  : std::string("no reason given");
+    row["yosys_status"] = first.find(": timeout") != std::string::npos ? "timeout" : "failed";
+    row["yosys_error"] = first;
+    for (const char* k : {"lut_sites", "lut", "srl", "lutram", "ff", "dsp", "bram", "carry4",
+                          "sta_ns"})
+      row[k] = nullptr;
+    return;
   }
-  std::ifstream in(csv);
-  std::string header, line;
-  std::getline(in, header);
-  std::getline(in, line);
-  const auto h = csv_fields(header);
-  const auto f = csv_fields(line);
-  std::map<std::string, std::string> m;
-  for (size_t k = 0; k < h.size() && k < f.size(); ++k) m[h[k]] = f[k];
-  row["lut"] = count(m, "LUT");
-  row["ff"] = count(m, "FF");
-  row["dsp"] = count(m, "DSP48E1");
-  row["carry4"] = count(m, "CARRY4");
-  row["bram"] = fraction(m, "BRAM36");
-  row["longest_path_levels"] = count(m, "Longest path (levels)");
-  row["yosys_seconds"] = count(m, "Yosys s");
-  row["yosys_status"] = row["lut"].is_null() ? (m.count("LUT") && !m["LUT"].empty() ? m["LUT"] : "failed")
-                                             : "ok";
-  if (spec_.scale_ip_candidates && row["yosys_status"] == "ok") {
-    const int J = 1 << c.params.n1, K = c.params.n / c.params.n1;
-    const int evaluators = c.params.unrolled ? K * (J - 1) + 2 : J + 1;
-    for (const char* k : {"lut", "ff", "dsp", "carry4", "bram"}) {
-      row[std::string("module_") + k] = row[k];
-      if (!row[k].is_null()) row[k] = row[k].get<double>() * evaluators;
-    }
-    row["yosys_basis"] = fmt::format("{} x {} candidate evaluators", module, evaluators);
-  } else {
-    row["yosys_basis"] = module;
-  }
+  const json& t = r["totals"];
+  row["yosys_status"] = "ok";
+  row["lut_sites"] = t["lut_sites"];
+  row["lut"] = t["lut"].get<long long>() + t["inv"].get<long long>();
+  row["srl"] = t["srl"];
+  row["lutram"] = t["lutram"];
+  row["ff"] = t["ff"];
+  row["dsp"] = t["dsp"];
+  row["bram"] = t["bram36"];
+  row["carry4"] = t["carry4"];
+  row["sta_ns"] = r.contains("sta_ns") ? r["sta_ns"] : json(nullptr);
 }
 
 }  // namespace rpu::app

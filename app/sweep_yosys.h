@@ -1,6 +1,8 @@
-// Yosys resources of one RTL module at a sweep configuration's parameters: runs
-// scripts/yosys_report.sh (synth_xilinx) through run_child, caches its CSV row under
-// DIR/yosys_cache/<module>-<hash of the module's parameters>, and reads the counts back.
+// Yosys resources of one RTL module (rpu_top by default) at a sweep configuration's parameters:
+// runs the cached hierarchical synthesis flow scripts/synth_hier.py (docs/resources.md) through
+// run_child with its cache in DIR/yosys_cache, so configurations share every derived module
+// whose parameters agree, and so do resumed runs and the jobs of an emitted job array; its
+// report and log per parameter set: DIR/yosys_cache/runs/<module>-<hash>.{json,log}.
 #pragma once
 
 #include <filesystem>
@@ -15,22 +17,23 @@
 
 namespace rpu::app {
 
-// The fields of one CSV line (RFC 4180: quoted fields, "" for a quote inside one).
-std::vector<std::string> csv_fields(const std::string& line);
-
 class YosysRunner {
  public:
-  YosysRunner(const SweepSpec& spec, std::filesystem::path cache_dir);
+  // jobs: Yosys processes at once for each configuration (the cores over the configurations
+  // the sweep runs in parallel).
+  YosysRunner(const SweepSpec& spec, std::filesystem::path cache_dir, int jobs);
 
-  // Sets the row's yosys_* fields and lut, ff, dsp, bram, carry4, longest_path_levels (scaled
-  // for "scale": "ip_candidates"). Configurations that share the module's parameters share one
-  // run: the first synthesises, the others wait for it and read the cache. Throws rpu::Error
-  // when the report could not run at all.
+  // Sets the row's yosys_* fields and the whole module's lut_sites, lut (LUT1–6 and INV), srl,
+  // lutram, ff, dsp, bram (BRAM36), carry4 and sta_ns (the slowest derived module's own logic).
+  // A derived module that fails or times out: yosys_status "failed" / "timeout", yosys_error
+  // naming it, no resource figures. Throws rpu::Error when the flow could not run at all (a
+  // bad parameter, an elaboration error).
   void measure(const SweepConfig& c, nlohmann::json& row);
 
  private:
   const SweepSpec& spec_;
   std::filesystem::path cache_;
+  int jobs_;
   std::vector<std::string> declared_;  // the module's integer parameters
   std::mutex table_mu_;
   std::map<std::string, std::mutex> key_mu_;  // per cache directory

@@ -6,7 +6,7 @@
 #   2. --emit-jobs: every line of jobs.txt run by `sh -c` exits 0 and stores its result, and
 #      merge.sh collects both rows;
 #   3. with Yosys: rpu is killed by SIGTERM, then SIGINT, while Yosys runs; rpu dies of that
-#      signal, and none of its children (yosys_report.sh, timeout, Yosys) outlives it;
+#      signal, and none of its children (scripts/synth_hier.py, its Yosys runs) outlives it;
 #   and no PWNED file appears anywhere.
 # Usage: sweep_injection.sh RPU SCENE.json WORK_DIR
 set -u
@@ -90,7 +90,7 @@ for sig in TERM INT; do
   done
   echo "SIG$sig: rpu $pid, children:" $kids >&2
   [ -n "$kids" ] || fail "SIG$sig: no Yosys child started (see $base/kill_$sig.log)"
-  ls "$dir/kill_$sig/yosys_cache/"*/log.txt >/dev/null 2>&1 ||
+  ls "$dir/kill_$sig/yosys_cache/runs/"*.log >/dev/null 2>&1 ||
     fail "SIG$sig: the Yosys report did not get its hostile output path"
   kill -s "$sig" $pid
   wait $pid
