@@ -182,9 +182,14 @@ module rpu_frame #(
   // each, one adder level), then one registered sum. The same tiles as one a × w product, but no
   // adder chain longer than about 45 bits after a DSP (one 4-tile tree level is a 57-bit chain
   // at n = 16, over the 4 ns budget).
+  // Both halves run at the slower one's latency: two tiles each up to n = 23; from n = 24 on,
+  // wh needs three tiles and one more adder level.
   localparam integer WL = 34;            // two 17-bit tiles
   localparam integer Split = WA > WL + 2 ? 1 : 0;
-  localparam integer LF = Split != 0 ? 4 : `RPU_MUL_LAT(AW, WA, 1);
+  localparam integer LSL = `RPU_MUL_LAT(AW, WL + 1, 1);
+  localparam integer LSH = Split != 0 ? `RPU_MUL_LAT(AW, WA - WL, 1) : 0;
+  localparam integer LS = LSL > LSH ? LSL : LSH;
+  localparam integer LF = Split != 0 ? LS + 1 : `RPU_MUL_LAT(AW, WA, 1);
   generate
     if (Split != 0) begin : g_split
       localparam integer WH = WA - WL;   // wh, signed
@@ -201,10 +206,10 @@ module rpu_frame #(
       wire [WaitW-1:0] wait_l;
       wire             vh_unused;
       wire             th_unused;
-      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WL + 1), .Signed(1), .TagW(WaitW), .Latency(3)) u_pfl (
+      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WL + 1), .Signed(1), .TagW(WaitW), .Latency(LS)) u_pfl (
         .clk_i, .rst_ni, .valid_i(valid_2), .a_i(fa_l), .b_i(wl_l), .tag_i(wait_2),
         .valid_o(valid_l), .p_o(pl), .tag_o(wait_l));
-      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WH), .Signed(1), .TagW(1), .Latency(3)) u_pfh (
+      rpu_mul_vec #(.Count(6), .AW(AW), .BW(WH), .Signed(1), .TagW(1), .Latency(LS)) u_pfh (
         .clk_i, .rst_ni, .valid_i(valid_2), .a_i(fa_l), .b_i(wh_l), .tag_i(1'b0),
         .valid_o(vh_unused), .p_o(ph), .tag_o(th_unused));
       wire [6*PF-1:0] sum;
