@@ -6,7 +6,8 @@ multipliers, delay lines and RAMs under them), in a copy so that it can be edite
  1. cold: every derived module synthesised; the instance counts are the design's; the totals
     are the sum of each module's own cells times its instances, and equal a monolithic run
     (synth_xilinx + stat -top in one Yosys process) within 1 % on every column;
- 2. nothing changed: nothing synthesised, no elaboration, the same totals;
+ 2. nothing changed: nothing synthesised, no elaboration, the same totals; --dry-run plans
+    nothing to synthesise;
  3. a comment added to a leaf (its lines move): nothing synthesised;
  4. the leaf's logic changed: exactly its derived modules synthesised again, the totals move,
     and they equal a monolithic run of the edited design;
@@ -101,6 +102,11 @@ def main():
               f"warm: nothing synthesised ({r2['synthesised']}), 11 from the cache")
         check(r2["elaborated"] is False, "warm: no elaboration (the plan is cached)")
         check(r2["totals"] == r1["totals"], "warm: the same totals")
+
+        rc, rd, _ = flow(work, "dry", "--dry-run")
+        check(rc == 0 and rd["status"] == "dry run" and rd["derived_modules"] == 11 and
+              rd["to_synthesise"] == 0, f"--dry-run on the warm cache: 11 modules, none to "
+              f"synthesise ({rd['to_synthesise']})")
 
         # 3. a comment: the lines move, the logic does not
         leaf = work / "design" / "blocks" / "hier_delay.v"
