@@ -253,6 +253,7 @@ module rpu_cordic #(
       // Counter-clockwise (d = +1): vectoring when y < 0, rotation when z >= 0.
       wire ccw = Mode == 0 ? y[XW-1] : ~z[F-1];
       reg [XW-1:0]  x_q, y_q;
+      reg           x_c, y_c;  // the sums' low bits (1 − carry-in): unused
       reg [F-1:0]   z_q;
       reg [SBW-1:0] side_q;
       reg           valid_q;
@@ -262,8 +263,11 @@ module rpu_cordic #(
       end
       always @(posedge clk_i) begin
         // x − d·y_sh, y + d·x_sh: one adder each, the operand inverted with carry-in 1 to subtract.
-        x_q    <= x + (y_sh ^ {XW{ccw}}) + {{(XW - 1){1'b0}}, ccw};
-        y_q    <= y + (x_sh ^ {XW{~ccw}}) + {{(XW - 1){1'b0}}, ~ccw};
+        // The carry-in rides as the low bit of one XW+1-bit sum ({a, 1} + {b, c} = 2(a + b + c)
+        // + 1 − c), so the synthesis sees one carry chain whatever else it maps (two chained adds
+        // were mapped as one or as two chains, 2.1k or 3.1k LUTs a unit, by Yosys' cell order).
+        {x_q, x_c} <= {x, 1'b1} + {y_sh ^ {XW{ccw}}, ccw};
+        {y_q, y_c} <= {y, 1'b1} + {x_sh ^ {XW{~ccw}}, ~ccw};
         z_q    <= z + (ccw ? AtanNeg : Atan);
         side_q <= sides[s];
       end
