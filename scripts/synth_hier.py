@@ -682,15 +682,16 @@ def synthesise_group(group, cache, args, work, read, cwd, stubs, progress):
                     body_of(canonical(job[name], job)[0]) != body_of(m.text):
                 bad.append(m)
                 continue
-            arrival = re.search(r"Latest arrival time in '" + re.escape(shown) + r"' is (-?\d+)",
-                                sta_text)
+            # The module's critical path: from its "Latest arrival" line to its histogram.
+            arrival = re.search(r"^Latest arrival time in '" + re.escape(shown) +
+                                r"' is -?\d+:\n(?:(?!Arrival histogram).*\n)*", sta_text, re.M)
             meta = {"module": m.name, "hdlname": m.hdlname, "parameters": describe_params(m),
                     "seconds": round(secs / len(todo), 1),
                     "cpu_seconds": round(cpu / len(todo), 1) if cpu else None,
                     "peak_mb": peak, "job_modules": len(todo), "yosys": YOSYS_VERSION,
                     "flow": FLOW_VERSION, "date": time.strftime("%Y-%m-%d %H:%M:%S")}
             stat = f"=== {shown} ===\n{sections[shown]}"
-            sta = f"Latest arrival time in '{shown}' is {arrival.group(1)}\n" if arrival else ""
+            sta = arrival.group(0) if arrival else ""
             cache.put(m.key, meta, {"stat.txt": stat, "sta.txt": sta})
             results[m.name] = (meta, stat, sta, False)
         if bad:
