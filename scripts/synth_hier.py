@@ -967,9 +967,15 @@ def run_monolithic(args):
     if status != "ok":
         die(f"the monolithic run of {args.top} failed ({status}); see {work / 'mono.log'}", 1)
     cpu, peak = parse_log_usage((work / "mono.log").read_text(errors="replace"))
-    cells = parse_stat((work / "stat.txt").read_text(), hierarchy=True)
+    stat = (work / "stat.txt").read_text()
+    cells = parse_stat(stat, hierarchy=True)
+    # Each module's own cells (for a comparison module by module with the flow's).
+    parts = re.split(r"^=== (.*) ===$", stat, flags=re.M)
+    names = {parts[k] for k in range(1, len(parts), 2)}
+    own = {parts[k]: columns(parse_stat(parts[k + 1], children=names))
+           for k in range(1, len(parts), 2) if parts[k] != "design hierarchy"}
     shutil.rmtree(work, ignore_errors=True)
-    return {"totals": columns(cells), "cells": dict(sorted(cells.items())),
+    return {"totals": columns(cells), "cells": dict(sorted(cells.items())), "modules": own,
             "wall_seconds": round(secs, 1), "cpu_seconds": cpu, "peak_mb": peak}
 
 
