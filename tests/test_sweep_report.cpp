@@ -87,7 +87,7 @@ json ok_row(const std::string& id, int n, int n1, int coord_w, json lut, json vs
           {"rtl_status", latency.is_null() ? "off" : "ok"}, {"rtl_cycles", nullptr},
           {"rtl_latency_cycles", latency}, {"rtl_items_per_cycle", nullptr}, {"rtl_items", nullptr},
           {"yosys_status", lut.is_null() ? "timeout" : "ok"}, {"yosys_module", "rpu_top"},
-          {"lut", lut}, {"ff", 500}, {"dsp", 4}, {"bram", 0}, {"carry4", 60},
+          {"lut_sites", lut}, {"ff", 500}, {"dsp", 4}, {"bram", 0}, {"carry4", 60},
           {"longest_path_levels", 12}};
 }
 
@@ -143,10 +143,10 @@ TEST(ParetoFront, KeepsOnlyUndominatedOkRows) {
   });
   json with_failed_measurements = rows;
   // A failed row that would dominate everything if it counted.
-  with_failed_measurements[9]["lut"] = 1;
+  with_failed_measurements[9]["lut_sites"] = 1;
   with_failed_measurements[9]["ref_vs_float_total"] = 0;
   json no_lut_key = ok_row("m", 8, 2, 8, 1, 0, 0, 1);
-  no_lut_key.erase("lut");
+  no_lut_key.erase("lut_sites");
   with_failed_measurements.push_back(no_lut_key);
 
   const std::vector<std::string> want = {"a", "b", "e", "f"};
@@ -207,7 +207,7 @@ TEST(SweepReport, WritesWellFormedSvgWithOneCirclePerPoint) {
   EXPECT_TRUE(std::is_sorted(xs.begin(), xs.end()));
   EXPECT_NE(accuracy.find(">16/4</text>"), std::string::npos);
   EXPECT_NE(accuracy.find(">24/8</text>"), std::string::npos);
-  EXPECT_NE(accuracy.find("c5: LUTs 1800, mismatched pixels 100 (Pareto front)"), std::string::npos);
+  EXPECT_NE(accuracy.find("c5: LUT sites 1800, mismatched pixels 100 (Pareto front)"), std::string::npos);
   // LUTs 1000 … 2600 on nice ticks of 500 from 1000 to 3000; mismatches 0 … 900 by 200.
   for (const char* tick : {">1000<", ">1500<", ">3000<", ">0<", ">200<", ">800<"})
     EXPECT_NE(accuracy.find(tick), std::string::npos) << tick;
@@ -279,14 +279,14 @@ TEST(SweepReport, EmptySweepWritesNoPlots) {
   EXPECT_FALSE(fs::exists(dir / "accuracy_vs_luts.svg"));
 }
 
-// A sweep without Yosys (no "lut" in any row): the LUT plot is left out, the LUT panel of the n1
+// A sweep without Yosys (no "lut_sites" in any row): the LUT plot is left out, the LUT panel of the n1
 // plot too, and a plot left from an earlier run with Yosys in the same directory is removed. The
 // page title names the sweep once.
 TEST(SweepReport, PlotsWithoutDataAreLeftOut) {
   json rows = json::array();
   for (int n1 : {1, 2, 4}) {
     json row = ok_row(config_id(16, n1), 16, n1, 16, 100 * n1, 10 - n1, 9 - n1, 20 + n1);
-    row.erase("lut");
+    row.erase("lut_sites");
     rows.push_back(row);
   }
   const fs::path dir = fresh_dir("no_yosys");
@@ -297,7 +297,7 @@ TEST(SweepReport, PlotsWithoutDataAreLeftOut) {
   EXPECT_FALSE(fs::exists(dir / "accuracy_vs_luts.svg"));
   const std::string n1 = read_text(dir / "luts_latency_vs_n1.svg");
   EXPECT_EQ(svg_problem(n1), "");
-  EXPECT_EQ(n1.find("LUTs against n1"), std::string::npos);
+  EXPECT_EQ(n1.find("LUT sites against n1"), std::string::npos);
   EXPECT_NE(n1.find("latency against n1"), std::string::npos);
   EXPECT_EQ(n1.find("no data"), std::string::npos);
   const std::string html = read_text(dir / "index.html");
@@ -358,7 +358,7 @@ TEST(SweepReport, TextIsEscaped) {
     EXPECT_EQ(svg.find("<img"), std::string::npos) << file;
     EXPECT_NE(svg.find("&lt;title&gt;&amp;&lt;/title&gt;"), std::string::npos) << file;
   }
-  EXPECT_NE(read_text(dir / "accuracy_vs_luts.svg").find("&lt;img src=x onerror=alert(1)&gt;: LUTs"),
+  EXPECT_NE(read_text(dir / "accuracy_vs_luts.svg").find("&lt;img src=x onerror=alert(1)&gt;: LUT sites"),
             std::string::npos);
 }
 
