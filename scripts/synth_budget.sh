@@ -5,22 +5,31 @@
 # static timing estimate by more than 0.25 ns. Prints one line per module (ok / FAIL and the
 # numbers) and, for a module clearly below its budget, a reminder to lower the budget.
 #
-# Usage: scripts/synth_budget.sh [-b BUDGET.csv] [-j N] [-t SECONDS] [module[:reduced] ...]
-# Slow (about 30 minutes for every module on 2 cores): the CTest synth_budget is opt-in
-# (cmake -DRPU_SYNTH_TESTS=ON; ctest -L synth).
+# Usage: scripts/synth_budget.sh [-H] [-b BUDGET.csv] [-j N] [-t SECONDS] [module[:reduced] ...]
+#   -H  the whole-design budgets (tests/synth_budget_top.csv: rpu_top unrolled and iterative),
+#       priced by the cached hierarchical flow (yosys_report.sh -H, scripts/synth_hier.py); sta
+#       is the slowest derived module's own logic
+# Slow (about 30 minutes for every module on 2 cores; the whole tops cold about an hour, warm
+# seconds): the CTests synth_budget and synth_budget_top are opt-in (cmake -DRPU_SYNTH_TESTS=ON;
+# ctest -L synth).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-budget=tests/synth_budget.csv
+budget=""
 jobs=1
 timeout=2400
-while getopts "b:j:t:h" opt; do
+hier=()
+while getopts "Hb:j:t:h" opt; do
   case "$opt" in
+    H) hier=(-H) ;;
     b) budget=$OPTARG ;;
     j) jobs=$OPTARG ;;
     t) timeout=$OPTARG ;;
-    *) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
+    *) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
   esac
 done
+if [ -z "$budget" ]; then
+  if ((${#hier[@]})); then budget=tests/synth_budget_top.csv; else budget=tests/synth_budget.csv; fi
+fi
 shift $((OPTIND - 1))
 [ -r "$budget" ] || { echo "synth_budget: $budget: cannot read the budget file" >&2; exit 2; }
 
@@ -38,7 +47,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 status=0
-scripts/yosys_report.sh -j "$jobs" -t "$timeout" -c "$work/report.csv" "${modules[@]}" \
+scripts/yosys_report.sh "${hier[@]}" -j "$jobs" -t "$timeout" -c "$work/report.csv" "${modules[@]}" \
   > "$work/report.md" 2> "$work/report.err" || status=$?
 if [ ! -s "$work/report.csv" ]; then
   echo "synth_budget: yosys_report.sh produced no results (exit $status):" >&2
