@@ -37,7 +37,9 @@ mapfile -t known < <(grep -v '^#' "$budget" | tail -n +2 | cut -d, -f1)
 if (($#)); then
   modules=("$@")
   for m in "${modules[@]}"; do
-    printf '%s\n' "${known[@]}" | grep -qxF -- "$m" ||
+    # (a word match, not `printf | grep -q`: under pipefail grep -q's early exit can fail the
+    # pipe with SIGPIPE and call a listed module unknown)
+    [[ " ${known[*]} " == *" $m "* ]] ||
       { echo "synth_budget: $m: no budget in $budget" >&2; exit 2; }
   done
 else
