@@ -313,11 +313,29 @@ LoadedScenes load_sweep_scenes(const SweepSpec& s) {
   return out;
 }
 
+std::string rtl_fingerprint(const std::filesystem::path& root) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(root / "rtl", ec), end; !ec && it != end;
+       it.increment(ec))
+    if (it->is_regular_file(ec)) files.push_back(it->path());
+  if (ec) throw Error((root / "rtl").string(), "cannot list the RTL: " + ec.message());
+  files.push_back(root / "scripts" / "synth_hier.py");
+  std::sort(files.begin(), files.end());
+  std::string all;
+  for (const fs::path& f : files)
+    all += fs::relative(f, root).generic_string() + '\0' +
+           hash_hex(read_input_file(f.string(), "RTL source")) + '\0';
+  return hash_hex(all);
+}
+
 std::string sweep_fingerprint(const SweepSpec& s, const LoadedScenes& scenes) {
   return hash_hex(dump_json(json({{"scenes", scenes.fingerprint}, {"w", s.width}, {"h", s.height},
                                   {"rtl", s.rtl}, {"rw", s.rtl_width}, {"rh", s.rtl_height},
                                   {"yosys", s.yosys}, {"ym", s.yosys_module},
-                                  {"yb", "synth_hier"}, {"rb", s.rtl_build}})));
+                                  {"yb", "synth_hier"}, {"rb", s.rtl_build},
+                                  {"src", s.yosys || s.rtl ? rtl_fingerprint(RPU_SOURCE_DIR) : ""}})));
 }
 
 std::vector<SweepConfig> expand_grid(const SweepSpec& s) {

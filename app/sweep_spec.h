@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -87,6 +88,12 @@ std::vector<SweepConfig> expand_grid(const SweepSpec& s);
 
 // FNV-1a 64 of the bytes, as 16 hex digits.
 std::string hash_hex(const std::string& bytes);
+
+// The hash of what a sweep's RTL and Yosys columns are made of, under the checkout root: every
+// file under rtl/ (sources, headers, the file list, the lint waivers) and scripts/synth_hier.py,
+// by relative path and content. Part of the resume fingerprint when rtl or yosys is on, so a
+// result of the design before an RTL edit is not reused for the design after it.
+std::string rtl_fingerprint(const std::filesystem::path& root);
 
 // JSON text that never throws on strings that are not UTF-8 (paths from the file system):
 // invalid bytes become U+FFFD.
