@@ -9,9 +9,10 @@
 // sums sd_j = md_j + md_{j+1} go through a lowest-index argmin η, and the next state is
 //   τ' = τ + η·D,  lo'.md = md_η,  hi'.md = md_{η+1},  Q' = Q_η,  S' = S + (2η·q2)·D.
 // Step = k wired in (unrolled pipeline), or Step = 0: k comes with the item (iterative form:
-// variable shifts, rpu_candidate with Fo = 0). The state, constants and context ride in
-// candidate 1's tag. Fixed latency: three input stages, the candidate's, the pair sums, the
-// compares and η, the η multiples, the moved state (two stages).
+// variable shifts, rpu_candidate with Fo = 0). The state, constants and context wait in a
+// slot-indexed RAM while the candidates run (candidate 1 carries the slot). Fixed latency: three
+// input stages, the candidate's, the pair sums, the compares and η, the η multiples, the moved
+// state (two stages).
 `default_nettype none
 `include "rpu_widths.vh"
 
@@ -119,9 +120,23 @@ module rpu_ip_step #(
   wire [7:0]    fo_raw = `RPU_FOB + N1[7:0] * k_in[7:0];
   wire [4:0]    fo_in = fo_raw > `RPU_FOMAX ? 5'd`RPU_FOMAX : fo_raw[4:0];
 
-  // The state, constants and context ride through the step in candidate 1's tag.
+  // The side band: the state, constants and context the step's end needs.
   localparam integer SbW = KW + 8 + StW + FsW + PcW + FgW + CtxW + TagW;
   wire [SbW-1:0] sb_in = {k_in, sh_in, state_i, fs_i, pc_i, fg_i, ctx_i, tag_i};
+  // It waits in a RAM of 2^SlotW slots (distributed RAM), written as the item enters, read by the
+  // slot candidate 1 brings back. The path is in order and at most one item enters per cycle, so
+  // a slot is read before it is written again while at most 2^SlotW items are between the write
+  // and the read: the three input stages and the candidate, whose latency is largest at Fo = 0,
+  // Metric = 0, SqrtW = 0 (56 cycles; its widths are otherwise fixed), so at most 60 items
+  // (checked in simulation below). Nothing of it rides the candidates' stages.
+  localparam integer SlotW = 6;
+  reg [SlotW-1:0] slot_q;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni)      slot_q <= {SlotW{1'b0}};
+    else if (valid_i) slot_q <= slot_q + 1'b1;
+  end
+  reg [SbW-1:0] sb_ram [0:(1 << SlotW) - 1];
+  always @(posedge clk_i) if (valid_i) sb_ram[slot_q] <= sb_in;
 
   // ---- input stages 1–3: the candidates' polynomial values ----
   wire [XSW-1:0] fX = fs_i[oX +: XSW], fY = fs_i[oY +: XSW];
@@ -150,7 +165,7 @@ module rpu_ip_step #(
   localparam integer InW  = 2*XW + 3*CTW + CWW + 2*CAW + 1;  // the candidate's inputs + sat flag
   wire [(J-1)*InW-1:0] cin;
   wire                 valid_3;
-  wire [SbW-1:0]       sb_3;
+  wire [SlotW-1:0]     slot_3;
   genvar j;
   generate
     for (j = 1; j < J; j = j + 1) begin : g_in
@@ -213,20 +228,20 @@ module rpu_ip_step #(
                          ow[127:CWW], oa1[127:CAW], oa2[127:CAW]};
     end
   endgenerate
-  // The side band and valid through the three input stages.
+  // The slot through the three input stages, the guides and Fo through two (and u_i3g).
   wire valid_1, valid_2;
-  wire [SbW+4:0] sbf_1, sbf_2, sbf_3;
-  rpu_stage #(.W(SbW + 5)) u_i1 (.clk_i, .rst_ni, .valid_i, .d_i({sb_in, fo_in}),
-                                  .valid_o(valid_1), .q_o(sbf_1));
-  rpu_stage #(.W(SbW + 5)) u_i2 (.clk_i, .rst_ni, .valid_i(valid_1), .d_i(sbf_1),
-                                  .valid_o(valid_2), .q_o(sbf_2));
-  rpu_stage #(.W(SbW + 5)) u_i3 (.clk_i, .rst_ni, .valid_i(valid_2), .d_i(sbf_2),
-                                  .valid_o(valid_3), .q_o(sbf_3));
-  assign sb_3 = sbf_3[SbW+4 -: SbW];
+  localparam integer IbW = SlotW + FgW + 5;
+  wire [IbW-1:0] sbf_1, sbf_2;
+  rpu_stage #(.W(IbW)) u_i1 (.clk_i, .rst_ni, .valid_i, .d_i({slot_q, fg_i, fo_in}),
+                             .valid_o(valid_1), .q_o(sbf_1));
+  rpu_stage #(.W(IbW)) u_i2 (.clk_i, .rst_ni, .valid_i(valid_1), .d_i(sbf_1),
+                             .valid_o(valid_2), .q_o(sbf_2));
+  rpu_stage #(.W(SlotW)) u_i3 (.clk_i, .rst_ni, .valid_i(valid_2), .d_i(sbf_2[IbW-1 -: SlotW]),
+                               .valid_o(valid_3), .q_o(slot_3));
   // The guides and Fo, which the candidates' first stage adds and shifts with, again in a held
-  // stage of flip-flops beside u_i3: not from the slow output of the shift-register LUTs the side
-  // band's delay line becomes (4.06 ns).
-  localparam integer oFg2 = 5 + CtxW + TagW;  // the guides' offset in sbf_2
+  // stage of flip-flops beside u_i3 (a flat synthesis would otherwise make the three stages one
+  // shift-register LUT, whose output is slow: 4.06 ns).
+  localparam integer oFg2 = 5;  // the guides' offset in sbf_2
   wire           valid_3h_unused;
   wire [4:0]     fo_3;
   wire [FgW-1:0] fg_3;
@@ -239,7 +254,7 @@ module rpu_ip_step #(
   wire [J-2:0]         c_valid;
   wire [(J-1)*MdW-1:0] c_md;
   wire [J-2:0]         c_ovf;
-  wire [SbW:0]         sb_out;   // {in-sat, side band}
+  wire [SlotW:0]       slot_out;  // {in-sat, slot}
   wire [J-2:0]         c_isat;   // a candidate input saturated
   localparam integer oIs = 1 + 2*CAW + CWW, oIy = oIs + 3*CTW;  // s2t's and y's offsets in ci
   generate
@@ -252,12 +267,12 @@ module rpu_ip_step #(
       wire [CWW-1:0] cw = ci[2*CAW+1 +: CWW];
       wire [2*CAW-1:0] ca = ci[1 +: 2*CAW];
       if (j == 1) begin : g_carry
-        rpu_candidate #(.SqrtW(SqrtW), .Fo(FoP), .Metric(Metric), .TagW(SbW + 1)) u_cand (
+        rpu_candidate #(.SqrtW(SqrtW), .Fo(FoP), .Metric(Metric), .TagW(SlotW + 1)) u_cand (
           .clk_i, .rst_ni, .valid_i(valid_3), .fo_i(fo_3), .x_i(cx), .y_i(cy), .t_i(ct),
           .c2t_i(cc), .s2t_i(cs), .w_i(cw), .a_i(ca), .g1_i(fg_3[GdW +: GdW]),
-          .g2_i(fg_3[0 +: GdW]), .tag_i({ci[0], sb_3}), .valid_o(c_valid[j-1]),
-          .md_o(c_md[(j-1)*MdW +: MdW]), .ovf_o(c_ovf[j-1]), .tag_o(sb_out));
-        assign c_isat[j-1] = sb_out[SbW];
+          .g2_i(fg_3[0 +: GdW]), .tag_i({ci[0], slot_3}), .valid_o(c_valid[j-1]),
+          .md_o(c_md[(j-1)*MdW +: MdW]), .ovf_o(c_ovf[j-1]), .tag_o(slot_out));
+        assign c_isat[j-1] = slot_out[SlotW];
       end else begin : g_plain
         wire tag_unused;
         assign c_isat[j-1] = tag_unused;
@@ -270,7 +285,23 @@ module rpu_ip_step #(
     end
   endgenerate
   // ---- the pair sums sd_j = md_j + md_{j+1} (md_0 = lo.md, md_J = hi.md), registered ----
-  wire [SbW-1:0] sb_c = sb_out[SbW-1:0];
+  // With Step wired in, k and the shift are constants: taken as such, not from the RAM (through
+  // which no synthesis propagates a constant), so the moves below shift by constants.
+  localparam integer KsW = KW + 8;  // {k, shift} at the top of the side band
+  wire [SbW-1:0] sb_q = sb_ram[slot_out[SlotW-1:0]];
+  wire [SbW-1:0] sb_c = {Step == 0 ? sb_q[SbW-1 -: KsW] : {k_in, sh_in}, sb_q[0 +: SbW-KsW]};
+`ifndef SYNTHESIS
+`ifndef FORMAL
+  // Items between the RAM's write and its read: never more than its slots.
+  integer in_flight = 0;
+  always @(posedge clk_i) begin
+    in_flight <= in_flight + (valid_i ? 1 : 0) - (c_valid[0] ? 1 : 0);
+    if (in_flight > (1 << SlotW))
+      $fatal(1, "rpu_ip_step: %0d items in flight over %0d side-band slots", in_flight,
+             1 << SlotW);
+  end
+`endif
+`endif
   localparam integer oSt = FsW + PcW + FgW + CtxW + TagW;  // the state in the side band
   wire [StW-1:0] st_c = sb_c[oSt +: StW];
   wire [MdW-1:0] md_a [0:J];
@@ -474,8 +505,8 @@ module rpu_ip_step #(
           sb_m[0 +: CtxW+TagW]}),
     .valid_o, .q_o({k_o, state_o, fs_o, pc_o, fg_o, ovf_o, ctx_o, tag_o}));
 
-  wire unused = ^{c_valid[J-2:0], sbf_3[4:0], valid_3h_unused, st_r[StW-1 -: N],
-                  st_c[StW-1 -: N], fs_h, sb_c, tau_n[N+15:N],
+  wire unused = ^{c_valid[J-2:0], valid_3h_unused, st_r[StW-1 -: N],
+                  st_c[StW-1 -: N], fs_h, sb_c, sb_q[SbW-1 -: KsW], tau_n[N+15:N],
                   e2[15:0], mX, mY, mT, mC, mS, mSW, mW2, mW1, mSA1, mA12, mA11, mSA2, mA22,
                   mA21, tX, tY, tT, tC, tS, tW, tSW, tA1, tSA1, tA2, tSA2, hx1, st_h[2*MdW-1:0],
                   sb_m, sb_p};
