@@ -253,7 +253,8 @@ module rpu_cordic #(
       // Counter-clockwise (d = +1): vectoring when y < 0, rotation when z >= 0.
       wire ccw = Mode == 0 ? y[XW-1] : ~z[F-1];
       reg [XW-1:0]  x_q, y_q;
-      reg           x_c, y_c;  // the sums' low bits (1 − carry-in): unused
+      reg           x_c, y_c;  // the sums' low bits (1 − carry-in)
+      wire          unused_c = ^{x_c, y_c};
       reg [F-1:0]   z_q;
       reg [SBW-1:0] side_q;
       reg           valid_q;
