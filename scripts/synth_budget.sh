@@ -9,7 +9,7 @@
 #   -H  the whole-design budgets (tests/synth_budget_top.csv: rpu_top unrolled and iterative),
 #       priced by the cached hierarchical flow (yosys_report.sh -H, scripts/synth_hier.py); sta
 #       is the slowest derived module's own logic
-# Slow (about 30 minutes for every module on 2 cores; the whole tops cold about an hour, warm
+# Slow (about 30 minutes for every module on 2 cores; the whole tops cold about 16 minutes each, warm
 # seconds): the CTests synth_budget and synth_budget_top are opt-in (cmake -DRPU_SYNTH_TESTS=ON;
 # ctest -L synth).
 set -euo pipefail
