@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "sweep_spec.h"
 
 namespace {
@@ -21,9 +23,11 @@ void write(const fs::path& file, const std::string& text) {
 class RtlFingerprint : public ::testing::Test {
  protected:
   void SetUp() override {
+    // One directory per process: CTest runs each test of this fixture as its own process, in
+    // parallel, so a name shared between them (gtest's random seed is one per second) races.
     root_ = fs::temp_directory_path() /
-            ("rpu_test_rtl_fingerprint_" + std::to_string(::testing::UnitTest::GetInstance()
-                                                              ->random_seed()));
+            ("rpu_test_rtl_fingerprint_" + std::to_string(::getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
     write(root_ / "rtl" / "rpu.f", "common/a.v\n");
     write(root_ / "rtl" / "common" / "a.v", "module a; endmodule\n");
@@ -60,7 +64,8 @@ TEST_F(RtlFingerprint, EveryKindOfChangeChangesIt) {
 }
 
 TEST(RtlFingerprintErrors, MissingFlowIsAnErrorNamingIt) {
-  const fs::path root = fs::temp_directory_path() / "rpu_test_rtl_fingerprint_noflow";
+  const fs::path root =
+      fs::temp_directory_path() / ("rpu_test_rtl_fingerprint_noflow_" + std::to_string(::getpid()));
   fs::remove_all(root);
   write(root / "rtl" / "a.v", "module a; endmodule\n");
   try {
