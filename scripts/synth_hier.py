@@ -330,6 +330,31 @@ def canonical(mod, modules):
     return "\n".join(out) + "\n", len(numbers)
 
 
+def same_module(a, b):
+    """Whether two canonical module bodies are the same module. Equal text, or equal once Yosys'
+    generated names are numbered by what they name rather than by the order Yosys made them:
+    that order is the same in any elaboration for most cells, but not always (a memory write
+    port's DATA and EN wires of rpu_fifo came in either order when the module was elaborated
+    twice). Each number is ranked by the names it appears in, with itself blanked (then by its
+    value), and the lines are compared as a sorted list, every name renumbered consistently, so
+    a connection made differently still differs."""
+    if a == b:
+        return True
+
+    def renumbered(body):
+        lines = body.splitlines()
+        stems = {}
+        for line in lines:
+            for tok in line.split():
+                for m in AUTOIDX.finditer(tok):
+                    stems.setdefault(m.group(1), set()).add(tok[:m.start()] + "$#" + tok[m.end():])
+        order = sorted(stems, key=lambda n: (sorted(stems[n]), int(n)))
+        rank = {n: str(k + 1) for k, n in enumerate(order)}
+        return sorted(AUTOIDX.sub(lambda m: "$" + rank[m.group(1)], l) for l in lines)
+
+    return renumbered(a) == renumbered(b)
+
+
 def body_of(text):
     """The lines after the module line of a canonical text (the name and its attributes
     differ between the design's elaboration and a job's)."""
@@ -679,7 +704,7 @@ def synthesise_group(group, cache, args, work, read, cwd, stubs, progress):
             name = inst.get(f"\\u{k}")
             shown = name[1:] if name and name.startswith("\\") else name  # as Yosys prints it
             if name is None or name not in job or shown not in sections or \
-                    body_of(canonical(job[name], job)[0]) != body_of(m.text):
+                    not same_module(body_of(canonical(job[name], job)[0]), body_of(m.text)):
                 bad.append(m)
                 continue
             # The module's critical path: from its "Latest arrival" line to its histogram.

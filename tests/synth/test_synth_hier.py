@@ -56,7 +56,24 @@ def module_rows(report, hdlname):
     return [m for m in report["modules"] if m["hdlname"] == hdlname]
 
 
+def check_same_module():
+    """same_module: Yosys' generated names numbered in another order are the same module; the
+    same names connected differently are not."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import synth_hier
+    a = ("  wire width 4 $1$memwr$\\m$3_DATA[3:0]$18\n  wire width 4 $1$memwr$\\m$3_EN[3:0]$19\n"
+         "  connect \\d $1$memwr$\\m$3_DATA[3:0]$18\n  connect \\e $1$memwr$\\m$3_EN[3:0]$19\n")
+    b = ("  wire width 4 $1$memwr$\\m$3_DATA[3:0]$19\n  wire width 4 $1$memwr$\\m$3_EN[3:0]$18\n"
+         "  connect \\d $1$memwr$\\m$3_DATA[3:0]$19\n  connect \\e $1$memwr$\\m$3_EN[3:0]$18\n")
+    swapped = b.replace("connect \\d", "connect \\x").replace("connect \\e", "connect \\d") \
+               .replace("connect \\x", "connect \\e")
+    check(synth_hier.same_module(a, b), "same_module: generated names made in another order match")
+    check(not synth_hier.same_module(a, swapped),
+          "same_module: the same wires connected the other way round do not match")
+
+
 def main():
+    check_same_module()
     if shutil.which("yosys") is None:
         print("yosys not found (scripts/setup.sh installs it)")
         return 1
