@@ -10,6 +10,17 @@
 //                 New pairs wait in a FIFO after the start unit; ready_o is credit-counted so
 //                 that FIFO never overflows.
 // Last, the test point (t and X = s(t) of τ_K, rpu_test_point). Results leave in input order.
+//
+// Only the arithmetic's operands ride the stages. What the end alone needs waits in block-RAM
+// FIFOs (rpu_fifo) and meets its item there, since items leave in the order they came:
+//   u_q_tp:  {α, β, p1, d, L², g1, g2}, written as the item enters, read at the test point;
+//   u_q_hh:  {h1², h2²}, written after the squares, read at the test point;
+//   u_q_ctx: the caller's context, written as the item enters, read as the result leaves.
+// Each holds 2^QLog2 entries, more than the items that can be between its write and its read:
+// unrolled, the frame (11), the squares, the start candidates and K steps (at most 64 cycles
+// each) and the test point (under 256 at every width): (K + 1)·64 + 256; iterative, the start
+// FIFO's 2^FifoLog2 credits, one step's 64 and the test point: 2^FifoLog2 + 64 + 256. A write to
+// a full queue or a read of an empty one stops a simulation.
 `default_nettype none
 `include "rpu_widths.vh"
 
@@ -65,11 +76,10 @@ module rpu_ip #(
   localparam integer FsW = 2*XSW + TSW + 2*CSW + WSW + SSW + 2*(ASW + SAW);
   localparam integer PcW = 2*CXW + TW + 2*CaW + W2W + 2*A2W;
   localparam integer FaW = A0W + A1W + A2W;
-  // What the test point needs, from the top: α, β, p1, d, L², {g1, h1²}, {g2, h2²}.
-  localparam integer GhW  = GdW + RadW;
-  localparam integer TpW  = 2*TW + 3*CoordW + 3*DW + L2W + 2*GhW;
-  // The bundle through the steps: {test-point fields, caller's context, overflow}.
-  localparam integer BunW = TpW + CtxW + 1;
+  // The queues: depth, and the fields of u_q_tp (MSB first).
+  localparam integer QLog2 = $clog2(Unrolled != 0 ? (K + 1) * 64 + 256
+                                                  : (1 << FifoLog2) + 64 + 256);
+  localparam integer TqW = 2*TW + 3*CoordW + 3*DW + L2W + 2*GdW;
 
   initial begin
     if (K > 255) $fatal(1, "rpu_ip: N/N1 must be below 256");
@@ -77,8 +87,23 @@ module rpu_ip #(
     if (GdW != GdWords) $fatal(1, "rpu_ip: GdW is derived; do not override it");
   end
 
-  // ---- the frame unit (α, β, the guides, the frame guides and the context in its tag) ----
-  localparam integer FTagW = 3*CoordW + 3*DW + L2W + 2*GdW + 2*FgdW + CtxW;
+  // ---- the queues' writes, as the item enters ----
+  wire accept_in = valid_i && ready_o;
+  wire q_tp_wr_ready, q_ctx_wr_ready, q_hh_wr_ready;
+  wire q_tp_valid, q_ctx_valid, q_hh_valid;
+  wire [TqW-1:0]    q_tp;
+  wire [2*RadW-1:0] q_hh;
+  wire              tp_valid;  // the test point takes an item (reads u_q_tp and u_q_hh)
+  rpu_fifo #(.Width(TqW), .Log2Depth(QLog2)) u_q_tp (
+    .clk_i, .rst_ni, .wr_valid_i(accept_in), .wr_ready_o(q_tp_wr_ready),
+    .wr_data_i({alpha_i, beta_i, p1_i, d_i, l2_i, g1_i, g2_i}), .rd_valid_o(q_tp_valid),
+    .rd_ready_i(tp_valid), .rd_data_o(q_tp));
+  rpu_fifo #(.Width(CtxW), .Log2Depth(QLog2)) u_q_ctx (
+    .clk_i, .rst_ni, .wr_valid_i(accept_in), .wr_ready_o(q_ctx_wr_ready), .wr_data_i(ctx_i),
+    .rd_valid_o(q_ctx_valid), .rd_ready_i(valid_o), .rd_data_o(ctx_o));
+
+  // ---- the frame unit (the guides' heights and the frame guides in its tag) ----
+  localparam integer FTagW = 2*HW + 2*FgdW;
   wire               valid_f;
   wire [4*CXW-1:0]   xy_f;                 // {x0, x1, y0, y1}
   wire [4*CaW-1:0]   cs_f;                 // {c2a, c2b, s2a, s2b}
@@ -89,11 +114,10 @@ module rpu_ip #(
   wire [FTagW-1:0]   tag_f;
   rpu_frame #(.CoordW(CoordW), .TFrac(TFrac), .N(N), .TagW(FTagW)) u_frame (
     .clk_i, .rst_ni, .valid_i(valid_i && ready_o), .a_i, .ab_i, .alpha_i, .beta_i, .p1_i,
-    .fr_i, .tag_i({p1_i, d_i, l2_i, g1_i, g2_i, fg_i, ctx_i}),
+    .fr_i, .tag_i({g1_i[GdHO +: HW], g2_i[GdHO +: HW], fg_i}),
     .valid_o(valid_f), .xy_o(xy_f), .cs_o(cs_f), .w_o(w_f), .fa_o(fa_f), .alpha_o(al_f),
     .beta_o(be_f), .ovf_o(ovf_f), .tag_o(tag_f));
-  localparam integer oG2f = 2*FgdW + CtxW, oG1f = oG2f + GdW;  // the guides in tag_f
-  wire [HW-1:0] h1_f = tag_f[oG1f + GdHO +: HW], h2_f = tag_f[oG2f + GdHO +: HW];
+  wire [HW-1:0] h1_f = tag_f[2*FgdW + HW +: HW], h2_f = tag_f[2*FgdW +: HW];
 
   // ---- h1², h2² (exact, unsigned) and the start values: the candidates τ = 0 and τ = 1 ----
   // (inputs at m = 0: x0, floor(α/2^(FT−FP)), …, floor(w0/2^2N); at m = 2^N: x0 + x1,
@@ -116,13 +140,12 @@ module rpu_ip #(
   wire             ovf_h;
   wire [FTagW-1:0] tag_h;
   assign {xy_h, xy_unused, cs_h, w_h, fa_h, al_h, be_h, ovf_h, tag_h} = pair_h;
-  wire [3*CoordW-1:0] p1_h;
-  wire [3*DW-1:0]     d_h;
-  wire [L2W-1:0]      l2_h;
-  wire [GdW-1:0]      g1_h, g2_h;
+  wire [2*HW-1:0]     h_unused;
   wire [2*FgdW-1:0]   fg_h;
-  wire [CtxW-1:0]     ctx_h;
-  assign {p1_h, d_h, l2_h, g1_h, g2_h, fg_h, ctx_h} = tag_h;
+  assign {h_unused, fg_h} = tag_h;
+  rpu_fifo #(.Width(2*RadW), .Log2Depth(QLog2)) u_q_hh (
+    .clk_i, .rst_ni, .wr_valid_i(valid_h), .wr_ready_o(q_hh_wr_ready), .wr_data_i(hh),
+    .rd_valid_o(q_hh_valid), .rd_ready_i(tp_valid), .rd_data_o(q_hh));
 
 `include "rpu_frame_fn.vh"
   wire [CXW-1:0] x0 = xy_h[3*CXW +: CXW], x1 = xy_h[2*CXW +: CXW];
@@ -172,15 +195,13 @@ module rpu_ip #(
                         W0[WSW-1:0], W1[SSW-1:0], A10[ASW-1:0], A11[SAW-1:0], A20[ASW-1:0],
                         A21[SAW-1:0]};
   wire [PcW-1:0] pc0 = {x1, y1, be_h, c2b, s2b, w2, a12, a22};
-  // The bundle: {α, β, p1, d, L², g1, h1², g2, h2², ctx, ovf}.
-  wire [BunW-1:0] bun_h = {al_h, be_h, p1_h, d_h, l2_h, g1_h, hh[0 +: RadW], g2_h,
-                           hh[RadW +: RadW], ctx_h, ovf_h | isat};
-  localparam integer SideW = FsW + PcW + 2*FgdW + BunW;
+  // Beside the carried word, one bit rides to the end: an overflow so far.
+  localparam integer SideW = FsW + PcW + 2*FgdW + 1;
   wire             valid_s;
   wire [2*InW-1:0] in_s;
   wire [SideW-1:0] side_s;
   rpu_stage #(.W(2*InW + SideW)) u_sin (
-    .clk_i, .rst_ni, .valid_i(valid_h), .d_i({in0, in1, fs0, pc0, fg_h, bun_h}),
+    .clk_i, .rst_ni, .valid_i(valid_h), .d_i({in0, in1, fs0, pc0, fg_h, ovf_h | isat}),
     .valid_o(valid_s), .q_o({in_s, side_s}));
   localparam integer Fo0 = `RPU_MDFRAC(N1, 0);
   // a candidate input's fields, LSB first: a, w, s2t, c2t, t, y, x
@@ -190,14 +211,22 @@ module rpu_ip #(
     .t_i(V[oCt +: CTW]), .c2t_i(V[oCc2 +: CTW]), \
     .s2t_i(V[oCs2 +: CTW]), .w_i(V[oCw +: CWW]), .a_i(V[0 +: 2*CAW])
   wire [InW-1:0]   ci0 = in_s[InW +: InW], ci1 = in_s[0 +: InW];
-  wire [2*FgdW-1:0] fg_s = side_s[BunW +: 2*FgdW];
+  wire [2*FgdW-1:0] fg_s = side_s[1 +: 2*FgdW];
   wire             s_valid, s_ovf0, s_ovf1, s_v1_unused, s_t1_unused;
   wire [MdW-1:0]   s_md0, s_md1;
   wire [SideW-1:0] s_side;
-  rpu_candidate #(.SqrtW(SqrtW), .Fo(Fo0), .Metric(Metric), .TagW(SideW)) u_start0 (
+  // The carried word waits in a queue while the start candidates run (rpu_tag_queue; a bound of
+  // 64 cycles on the candidate's latency, 56 at most: rpu_ip_step's side-band slots count on it
+  // too), so only the queue's constant bit rides candidate 0's stages.
+  localparam integer SPTagW = `RPU_PTAGW(SideW);
+  wire [SPTagW-1:0] s_ptag_in, s_ptag_out;
+  rpu_tag_queue #(.TagW(SideW), .Latency(64)) u_start_tagq (
+    .clk_i, .rst_ni, .valid_i(valid_s), .tag_i(side_s), .ptag_o(s_ptag_in), .out_valid_i(s_valid),
+    .ptag_i(s_ptag_out), .tag_o(s_side));
+  rpu_candidate #(.SqrtW(SqrtW), .Fo(Fo0), .Metric(Metric), .TagW(SPTagW)) u_start0 (
     .clk_i, .rst_ni, .valid_i(valid_s), .fo_i(5'd0), `RPU_CAND_IN(ci0),
-    .g1_i(fg_s[FgdW +: FgdW]), .g2_i(fg_s[0 +: FgdW]), .tag_i(side_s),
-    .valid_o(s_valid), .md_o(s_md0), .ovf_o(s_ovf0), .tag_o(s_side));
+    .g1_i(fg_s[FgdW +: FgdW]), .g2_i(fg_s[0 +: FgdW]), .tag_i(s_ptag_in),
+    .valid_o(s_valid), .md_o(s_md0), .ovf_o(s_ovf0), .tag_o(s_ptag_out));
   rpu_candidate #(.SqrtW(SqrtW), .Fo(Fo0), .Metric(Metric), .TagW(1)) u_start1 (
     .clk_i, .rst_ni, .valid_i(valid_s), .fo_i(5'd0), `RPU_CAND_IN(ci1),
     .g1_i(fg_s[FgdW +: FgdW]), .g2_i(fg_s[0 +: FgdW]), .tag_i(1'b0),
@@ -207,41 +236,40 @@ module rpu_ip #(
   localparam integer SStW = N + 2*MdW;
   localparam integer CarW = SStW + FsW + PcW + 2*FgdW;
   wire [CarW-1:0] s_car = {{N{1'b0}}, s_md0, s_md1, s_side[SideW-1 -: FsW + PcW + 2*FgdW]};
-  wire [BunW-1:0] s_bun = {s_side[BunW-1:1], s_side[0] | s_ovf0 | s_ovf1};
+  wire           s_bun = s_side[0] | s_ovf0 | s_ovf1;  // the overflow so far
 
-  // The test point's inputs from a bundle and τ.
-  wire            tp_valid;
+  // The test point's τ, md's and overflow so far.
+  wire            tp_ovf_in;
   wire [N-1:0]    tp_tau;
   wire [2*MdW-1:0] tp_mds;
-  wire [BunW-1:0] tp_bun;
   generate
     if (Unrolled != 0) begin : g_unrolled
       assign ready_o = 1'b1;
       wire [K:0]             v   /* verilator split_var */;
       wire [(K+1)*CarW-1:0]  car /* verilator split_var */;
-      wire [(K+1)*BunW-1:0]  bun /* verilator split_var */;
+      wire [K:0]             bun /* verilator split_var */;
       assign v[0] = s_valid;
       assign car[0 +: CarW] = s_car;
-      assign bun[0 +: BunW] = s_bun;
+      assign bun[0] = s_bun;
       genvar k;
       for (k = 1; k <= K; k = k + 1) begin : g_step
         wire [CarW-1:0] c = car[(k-1)*CarW +: CarW];
         wire [KW-1:0]   k_unused;
         wire            step_ovf, tag_unused;
-        wire [BunW-1:0] b_out;
+        wire            b_out;
         wire [SStW-1:0] st_o;
         wire [FsW-1:0]  fs_o;
         wire [PcW-1:0]  pc_o;
         wire [2*FgdW-1:0] fg_o;
         rpu_ip_step #(.TFrac(TFrac), .SqrtW(SqrtW), .N(N), .N1(N1), .Metric(Metric), .Step(k),
-                      .CtxW(BunW), .TagW(1)) u_step (
+                      .CtxW(1), .TagW(1)) u_step (
           .clk_i, .rst_ni, .valid_i(v[k-1]), .k_i({KW{1'b0}}),
           .state_i(c[CarW-1 -: SStW]), .fs_i(c[PcW+2*FgdW +: FsW]), .pc_i(c[2*FgdW +: PcW]),
-          .fg_i(c[0 +: 2*FgdW]), .ctx_i(bun[(k-1)*BunW +: BunW]), .tag_i(1'b0),
+          .fg_i(c[0 +: 2*FgdW]), .ctx_i(bun[k-1]), .tag_i(1'b0),
           .valid_o(v[k]), .k_o(k_unused), .state_o(st_o), .fs_o(fs_o), .pc_o(pc_o), .fg_o(fg_o),
           .ovf_o(step_ovf), .ctx_o(b_out), .tag_o(tag_unused));
         assign car[k*CarW +: CarW] = {st_o, fs_o, pc_o, fg_o};
-        assign bun[k*BunW +: BunW] = {b_out[BunW-1:1], b_out[0] | step_ovf};
+        assign bun[k] = b_out | step_ovf;
         wire unused_k = ^{k_unused, tag_unused};
       end
       wire [CarW-1:0] last = car[K*CarW +: CarW];
@@ -249,16 +277,16 @@ module rpu_ip #(
       assign tp_tau   = last[CarW-1 -: N];
       localparam integer oMds = CarW - N - 2*MdW;  // below τ
       assign tp_mds   = last[oMds +: 2*MdW];
-      assign tp_bun   = bun[K*BunW +: BunW];
+      assign tp_ovf_in = bun[K];
       wire unused_last = ^last[0 +: FsW + PcW + 2*FgdW];
     end else begin : g_iterative
       localparam integer Depth = 1 << FifoLog2;
-      localparam integer QW = CarW + BunW;
+      localparam integer QW = CarW + 1;
       reg [FifoLog2:0]   owed_q;
       wire               loop_valid;
       wire [KW-1:0]      loop_k;
       wire [CarW-1:0]    loop_car;
-      wire [BunW-1:0]    loop_bun;
+      wire               loop_bun;
       wire               loop_ovf;
       wire               tag_unused;
       wire               recirc = loop_valid && (loop_k != K[KW-1:0]);
@@ -279,14 +307,13 @@ module rpu_ip #(
       wire            in_v   = recirc || pop;
       wire [KW-1:0]   in_k   = recirc ? loop_k + 1'b1 : {{(KW-1){1'b0}}, 1'b1};
       wire [CarW-1:0] in_car = recirc ? loop_car : head[QW-1 -: CarW];
-      wire [BunW-1:0] in_bun = recirc ? {loop_bun[BunW-1:1], loop_bun[0] | loop_ovf}
-                                      : head[BunW-1:0];
+      wire            in_bun = recirc ? loop_bun | loop_ovf : head[0];
       wire [SStW-1:0] st_o;
       wire [FsW-1:0]  fs_o;
       wire [PcW-1:0]  pc_o;
       wire [2*FgdW-1:0] fg_o;
       rpu_ip_step #(.TFrac(TFrac), .SqrtW(SqrtW), .N(N), .N1(N1), .Metric(Metric), .Step(0),
-                    .CtxW(BunW), .TagW(1)) u_step (
+                    .CtxW(1), .TagW(1)) u_step (
         .clk_i, .rst_ni, .valid_i(in_v), .k_i(in_k), .state_i(in_car[CarW-1 -: SStW]),
         .fs_i(in_car[PcW+2*FgdW +: FsW]), .pc_i(in_car[2*FgdW +: PcW]),
         .fg_i(in_car[0 +: 2*FgdW]), .ctx_i(in_bun), .tag_i(1'b0),
@@ -296,15 +323,15 @@ module rpu_ip #(
       assign tp_valid = loop_valid && (loop_k == K[KW-1:0]);
       assign tp_tau   = st_o[SStW-1 -: N];
       assign tp_mds   = st_o[0 +: 2*MdW];
-      assign tp_bun   = {loop_bun[BunW-1:1], loop_bun[0] | loop_ovf};
+      assign tp_ovf_in = loop_bun | loop_ovf;
       wire unused_iter = ^{tag_unused, fifo_wr_ready_unused};
     end
   endgenerate
 
-  // ---- the test point of τ_K ----
-  localparam integer oGh2 = CtxW + 1, oGh1 = oGh2 + GhW, oL2 = oGh1 + GhW, oD = oL2 + L2W;
+  // ---- the test point of τ_K, its other inputs from the queues ----
+  localparam integer oG2 = 0, oG1 = GdW, oL2 = 2*GdW, oD = oL2 + L2W;  // fields of q_tp
   localparam integer oP1 = oD + 3*DW, oBe = oP1 + 3*CoordW, oAl = oBe + TW;
-  localparam integer TpTagW = 2*MdW + CtxW + 1;
+  localparam integer TpTagW = 2*MdW + 1;
   wire [TW-1:0]   tp_t;
   wire [3*XW-1:0] tp_x;
   wire            tp_ovf;
@@ -312,21 +339,37 @@ module rpu_ip #(
   wire [N-1:0]    tau_unused;
   rpu_test_point #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N),
                    .TagW(TpTagW + N)) u_tp (
-    .clk_i, .rst_ni, .valid_i(tp_valid), .tau_i(tp_tau), .alpha_i(tp_bun[oAl +: TW]),
-    .beta_i(tp_bun[oBe +: TW]), .p1_i(tp_bun[oP1 +: 3*CoordW]), .d_i(tp_bun[oD +: 3*DW]),
-    .l2_i(tp_bun[oL2 +: L2W]), .g1_i(tp_bun[oGh1 + RadW +: GdW]), .hh1_i(tp_bun[oGh1 +: RadW]),
-    .g2_i(tp_bun[oGh2 + RadW +: GdW]), .hh2_i(tp_bun[oGh2 +: RadW]),
-    .tag_i({tp_tau, tp_mds, tp_bun[0 +: CtxW + 1]}),
+    .clk_i, .rst_ni, .valid_i(tp_valid), .tau_i(tp_tau), .alpha_i(q_tp[oAl +: TW]),
+    .beta_i(q_tp[oBe +: TW]), .p1_i(q_tp[oP1 +: 3*CoordW]), .d_i(q_tp[oD +: 3*DW]),
+    .l2_i(q_tp[oL2 +: L2W]), .g1_i(q_tp[oG1 +: GdW]), .hh1_i(q_hh[0 +: RadW]),
+    .g2_i(q_tp[oG2 +: GdW]), .hh2_i(q_hh[RadW +: RadW]),
+    .tag_i({tp_tau, tp_mds, tp_ovf_in}),
     .valid_o(valid_o), .t_o(tp_t), .x_o(tp_x), .ovf_o(tp_ovf), .tag_o({tau_unused, tp_tag}));
   wire [N-1:0] tau_o = tau_unused;
   assign state_o = {tau_o, tp_t, tp_x, tp_tag[TpTagW-1 -: 2*MdW]};
-  assign ctx_o   = tp_tag[1 +: CtxW];
   assign ovf_o   = tp_tag[0] | tp_ovf;
+`ifndef SYNTHESIS
+`ifndef FORMAL
+  // The queues' depth bound (above): a write to a full queue or a read of an empty one is a
+  // design error, not a load the unit may meet.
+  // (checked from the first reset on: before it, the valid bits hold arbitrary start values)
+  reg seen_reset = 1'b0;
+  always @(posedge clk_i or negedge rst_ni) if (!rst_ni) seen_reset <= 1'b1;
+  always @(posedge clk_i) begin
+    if (seen_reset && ((accept_in && !(q_tp_wr_ready && q_ctx_wr_ready)) ||
+                       (valid_h && !q_hh_wr_ready)))
+      $fatal(1, "rpu_ip: a context queue of %0d entries is full", 1 << QLog2);
+    if (seen_reset && ((tp_valid && !(q_tp_valid && q_hh_valid)) || (valid_o && !q_ctx_valid)))
+      $fatal(1, "rpu_ip: a context queue is empty when its item arrives");
+  end
+`endif
+`endif
   wire unused = ^{xy_unused, vx0[127:CXW], sx0, sy0, st0, sc0, ss0, sw0, sa10, sa20, sx1, sy1,
                   st1, sc1, ss1, sw1, sa11, sa21, fX, fY, fT, fC2, fS2, W0, W1, A10, A11, A20,
                   A21, X1, Y1, BE, C2B, S2B, W2, A12, A22, vy0, vt0, vc0, vs0, vw0, va10, va20,
                   vx1, vy1, vt1, vc1, vs1, vw1, va11, va21, s_v1_unused, s_t1_unused,
-                  tp_bun[TpW + CtxW], s_side[SideW-1 -: 1]};
+                  h_unused, q_tp_wr_ready, q_ctx_wr_ready, q_hh_wr_ready, q_tp_valid,
+                  q_ctx_valid, q_hh_valid};
   `undef RPU_SX
 endmodule
 

@@ -437,7 +437,9 @@ module rpu_ip_step #(
                         mSA1[ASW-1:0], mA12[ASW-1:0], mA11[SAW-1:0],
                         mSA2[ASW-1:0], mA22[ASW-1:0], mA21[SAW-1:0]};
   // τ' = τ + η·D (the bits η lands on are zero in τ)
-  wire [7:0]   sh_h = sb_h[oSh +: 8];
+  // (with Step wired in, the shift is a constant, not the value the stages carried: a hierarchical
+  // synthesis cannot see through the stages, and a carried shift would be a barrel shifter)
+  wire [7:0]   sh_h = Step == 0 ? sb_h[oSh +: 8] : sh_in;
   wire [N-1:0] tau_h = st_h[StW-1 -: N];
   wire [N+15:0] tau_n = {16'd0, tau_h} + ({{N{1'b0}}, e1} << sh_h);
   wire             valid_p;
@@ -451,7 +453,7 @@ module rpu_ip_step #(
     .valid_o(valid_p), .q_o({mult_p, tau_p, mds_p, ovf_p, sb_p}));
   // Terms of the move, in the fields' order and widths: a multiple times D = 2^sh, η² ones
   // times D².
-  wire [7:0] sh_p = sb_p[oSh +: 8];
+  wire [7:0] sh_p = Step == 0 ? sb_p[oSh +: 8] : sh_in;
   wire [XSW-1:0] uX, uY;
   wire [TSW-1:0] uT;
   wire [CSW-1:0] uC, uS;
@@ -501,7 +503,7 @@ module rpu_ip_step #(
   `undef RPU_STEP_ADD
   rpu_stage #(.W(KW + StW + FsW + PcW + FgW + 1 + CtxW + TagW)) u_out (
     .clk_i, .rst_ni, .valid_i(valid_m),
-    .d_i({sb_m[SbW-1 -: KW], tau_m, mds_m, fs_n, sb_m[oPc +: PcW], sb_m[CtxW+TagW +: FgW], ovf_m,
+    .d_i({Step == 0 ? sb_m[SbW-1 -: KW] : k_in, tau_m, mds_m, fs_n, sb_m[oPc +: PcW], sb_m[CtxW+TagW +: FgW], ovf_m,
           sb_m[0 +: CtxW+TagW]}),
     .valid_o, .q_o({k_o, state_o, fs_o, pc_o, fg_o, ovf_o, ctx_o, tag_o}));
 
