@@ -17,6 +17,7 @@
 
 // common: the shared arithmetic blocks
 common/rpu_fifo.v
+common/rpu_tag_queue.v
 common/rpu_stage.v
 common/rpu_skid.v
 common/rpu_latency_check.v

@@ -18,6 +18,11 @@
 `define RPU_MD2W(coordw)     (2 * (coordw) + 8)     // |pr − X|² (dist_radicand_w)
 `define RPU_DEPTHW(coordw, edgefrac) ((coordw) + 4 + `RPU_EGW(edgefrac) + 2)  // depth c = (X − h)·W
 
+// A unit's caller tag of RPU_TAGQ_MINW bits or more waits in a queue (rpu_tag_queue) instead of
+// riding the unit's stages, which then carry RPU_PTAGW(tagw) bits.
+`define RPU_TAGQ_MINW        32
+`define RPU_PTAGW(tagw)      ((tagw) >= `RPU_TAGQ_MINW ? 1 : (tagw))
+
 // One guide: its shape {mode, h, a, b} (rpu_guide_shape.vh) and the descriptor {shape, u}
 // (rpu_guide_desc.vh); the layout headers check their totals against these.
 `define RPU_GSW(coordw, tfrac) (2 + `RPU_HW(coordw) + (coordw) + (tfrac))

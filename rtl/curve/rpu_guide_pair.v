@@ -13,7 +13,8 @@
 // The arc's h, or the finished flat/straight result, rides through each square root's side band
 // (one field), so every mode has the same fixed latency: Latency = 3 + Stages(rpu_sqrt) + 1
 // cycles (33 at the defaults, 24 with SqrtW = 40). One operand per cycle, no stall; `tag_i`
-// comes out unchanged with the results.
+// comes out unchanged with the results (a tag of 32 bits or more through an rpu_tag_queue beside
+// the stages).
 //
 // g is signed: with a pre-shifted square root (SqrtW > 0) the root may fall below h, so the arc
 // gives g ∈ (−2^S, 0] where the exact g is 0 (S = the pre-shift; docs/fixed-point.md bound).
@@ -90,6 +91,8 @@ module rpu_guide_pair #(
   localparam integer LatProd = (LatAwBw + LatAb > LatLw ? LatAwBw + LatAb : LatLw) + 1;
   // The unit's latency (what the testbenches and the enclosing units count on).
   localparam integer Latency = LatW + LatProd + SqStages + 1;
+  // The caller's tag: a wide one waits in a queue (rpu_tag_queue), the stages carry PTagW bits.
+  localparam integer PTagW = `RPU_PTAGW(TagW);
 
   initial begin
     if (HhIn == 0 && LatHh > LatW + LatProd - 1)
@@ -114,7 +117,11 @@ module rpu_guide_pair #(
   localparam integer WtG1O  = HhTW + GIn;
   localparam integer WtL2O  = HhTW + 2 * GIn;
   localparam integer WtTagO = WtL2O + L2W;
-  localparam integer WTagW  = WtTagO + TagW;
+  localparam integer WTagW  = WtTagO + PTagW;
+  wire [PTagW-1:0]   ptag_in, ptag_out;
+  rpu_tag_queue #(.TagW(TagW), .Latency(Latency)) u_tagq (
+    .clk_i, .rst_ni, .valid_i, .tag_i, .ptag_o(ptag_in), .out_valid_i(valid_o), .ptag_i(ptag_out),
+    .tag_o);
   wire [HhTW-1:0]    hh_in;
   generate
     if (HhIn != 0) begin : g_hh_tag
@@ -129,11 +136,11 @@ module rpu_guide_pair #(
   wire [WTagW-1:0]   w_tag;
   rpu_mul #(.AW(TFrac), .BW(TFrac), .Signed(0), .TagW(WTagW)) u_w (
     .clk_i, .rst_ni, .valid_i, .a_i(x), .b_i(x_comp),
-    .tag_i({tag_i, l2_i, g1_i, g2_i, hh_in}),
+    .tag_i({ptag_in, l2_i, g1_i, g2_i, hh_in}),
     .valid_o(w_valid), .p_o(ww), .tag_o(w_tag));
   // ww ≤ 2^(2FT−2): bit 2FT−1 is zero; the low FT bits are the floor's dropped fraction.
   wire [WW-1:0]   w      = ww[2*TFrac-2:TFrac];
-  wire [TagW-1:0] tag_w  = w_tag[WtTagO +: TagW];
+  wire [PTagW-1:0] tag_w = w_tag[WtTagO +: PTagW];
   wire [L2W-1:0]  l2_w   = w_tag[WtL2O +: L2W];
   wire [GIn-1:0]  gin_w [0:1];
   assign gin_w[0] = w_tag[WtG1O +: GIn];
@@ -148,7 +155,7 @@ module rpu_guide_pair #(
   // lw's tag, LSB first: {tag, w, {mode, h} of guide 1 and 2, h²}.
   localparam integer LtWO   = HhTW + 2 * (2 + HW);
   localparam integer LtTagO = LtWO + WW;
-  localparam integer LTagW  = LtTagO + TagW;
+  localparam integer LTagW  = LtTagO + PTagW;
   wire               lw_valid;
   wire [L2W+WW-1:0]  lw_p;
   wire [LTagW-1:0]   lw_tag;
@@ -157,7 +164,7 @@ module rpu_guide_pair #(
     .tag_i({tag_w, w, gin_w[0][GIn-1 -: 2 + HW], gin_w[1][GIn-1 -: 2 + HW], hh_w}),
     .valid_o(lw_valid), .p_o(lw_p), .tag_o(lw_tag));
   wire [LwW-1:0]  lw      = lw_p[L2W+WW-1:TFrac];
-  wire [TagW-1:0] tag_l   = lw_tag[LtTagO +: TagW];
+  wire [PTagW-1:0] tag_l  = lw_tag[LtTagO +: PTagW];
   wire [WW-1:0]   w_l     = lw_tag[LtWO +: WW];
   wire [HhTW-1:0] hh_l    = lw_tag[HhTW-1:0];
   wire [1:0]      mode_l [0:1];
@@ -167,8 +174,8 @@ module rpu_guide_pair #(
   // ---- per guide: the radicand h² + lw (arc) and aw − floor(aw·bw) (flat) ----
   wire            valid_r;
   wire [WW-1:0]   w_r;
-  wire [TagW-1:0] tag_r;
-  rpu_stage #(.W(WW + TagW)) u_r (
+  wire [PTagW-1:0] tag_r;
+  rpu_stage #(.W(WW + PTagW)) u_r (
     .clk_i, .rst_ni, .valid_i(lw_valid), .d_i({w_l, tag_l}), .valid_o(valid_r),
     .q_o({w_r, tag_r}));
   wire [1:0]      is_arc_r, ovf_r;
@@ -243,7 +250,7 @@ module rpu_guide_pair #(
   endgenerate
 
   // ---- the two square roots; the rest rides in their side bands ----
-  localparam integer Sb1W = TagW + WW + 2 + HW;
+  localparam integer Sb1W = PTagW + WW + 2 + HW;
   localparam integer Sb2W = 2 + HW;
   wire             sq1_valid, sq2_valid_unused;
   wire [RootW-1:0] root1, root2;
@@ -258,7 +265,7 @@ module rpu_guide_pair #(
     .tag_i({is_arc_r[1], ovf_r[1], hg_r[1]}),
     .valid_o(sq2_valid_unused), .root_o(root2), .tag_o(sb2));
 
-  wire [TagW-1:0] sb_tag = sb1[Sb1W-1 -: TagW];
+  wire [PTagW-1:0] sb_tag = sb1[Sb1W-1 -: PTagW];
   wire [WW-1:0]   sb_w   = sb1[HW+2 +: WW];
 
   // ---- output stage: g = root − h (arc) or the side-band result ----
@@ -271,10 +278,10 @@ module rpu_guide_pair #(
   wire unused_bits = ^{ww[2*TFrac-1], ww[TFrac-1:0], lw_p[TFrac-1:0], g1_arc_full[HW:GW],
                        g2_arc_full[HW:GW], sq2_valid_unused, hh_l, hh1_i, hh2_i};
 
-  rpu_stage #(.W(2*GW + WW + 1 + TagW)) u_out (
+  rpu_stage #(.W(2*GW + WW + 1 + PTagW)) u_out (
     .clk_i, .rst_ni, .valid_i(sq1_valid),
     .d_i({g1_next, g2_next, sb_w, sb1[HW] | sb2[HW], sb_tag}),
-    .valid_o, .q_o({g1_o, g2_o, w_o, ovf_o, tag_o}));
+    .valid_o, .q_o({g1_o, g2_o, w_o, ovf_o, ptag_out}));
 `ifndef SYNTHESIS
   // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
   rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_guide_pair")) u_latency_check (

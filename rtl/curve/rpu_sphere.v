@@ -13,7 +13,8 @@
 // Vectors are flattened {z, y, x}, each component two's complement.
 // Pipeline (every product an rpu_mul, rpu_mul_latency.vh; one operand per cycle, no stall; the
 // context rides in the multipliers' and the square root's tags, up to the root in a plain delay
-// line where no logic reads it; `tag_i` comes out unchanged):
+// line where no logic reads it; `tag_i` comes out unchanged, a tag of 32 bits or more through
+// an rpu_tag_queue beside the stages, whose tags then carry one constant bit):
 //   1        q = c0 − h
 //   L1       v̂_k·q_k, q_{k+1}·v̂_{k+2}, q_{k+2}·v̂_{k+1}   rpu_mul (CW+1) × (FV+2): 3 at the defaults
 //   1        tc (a sum of three: carry-save + one adder), w = q × v̂ floored
@@ -102,6 +103,8 @@ module rpu_sphere #(
   localparam integer LCh = `RPU_MUL_LAT(InvW + 1, DotW, 1) + 3;  // rpu_chord's
   // The unit's latency (what the enclosing units count on).
   localparam integer Latency = SqStages + 9 + L1 + L2 + L3 + L4 + LCh;
+  // The caller's tag: a wide one waits in a queue (rpu_tag_queue), the stages carry PTagW bits.
+  localparam integer PTagW = `RPU_PTAGW(TagW);
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_sphere: CoordW must be in 12..40");
@@ -135,10 +138,14 @@ module rpu_sphere #(
   // no logic reads before the square root, in a plain delay line (shift-register LUTs) of
   // L1 + L2 + 4 stages from the inputs to the root's tag.
   localparam integer C1W = R2W;
-  localparam integer DcW = TagW + SegW + 3 * DirW + 3 * CW;
+  localparam integer DcW = PTagW + SegW + 3 * DirW + 3 * CW;
+  wire [PTagW-1:0] ptag_in, ptag_out;
+  rpu_tag_queue #(.TagW(TagW), .Latency(Latency)) u_tagq (
+    .clk_i, .rst_ni, .valid_i, .tag_i, .ptag_o(ptag_in), .out_valid_i(valid_o), .ptag_i(ptag_out),
+    .tag_o);
   localparam integer Dc  = L1 + L2 + 4;
   reg [Dc*DcW-1:0] dc_q;
-  always @(posedge clk_i) dc_q <= {dc_q[(Dc-1)*DcW-1:0], tag_i, p1_i, d_i, inv_m_i, inv_s_i, vhat_i, eye_i};
+  always @(posedge clk_i) dc_q <= {dc_q[(Dc-1)*DcW-1:0], ptag_in, p1_i, d_i, inv_m_i, inv_s_i, vhat_i, eye_i};
   wire [DcW-1:0] dc_out = dc_q[Dc*DcW-1 -: DcW];
   reg [3*DiffW-1:0] q1_q;
   reg [3*DirW-1:0]  v1_q;
@@ -271,7 +278,7 @@ module rpu_sphere #(
   wire [3*CW-1:0]   h6_q   = dc_out[0 +: 3*CW];
   wire [3*DirW-1:0] v6_q   = dc_out[3*CW +: 3*DirW];
   wire [SegW-1:0]   seg6_q = dc_out[3*CW+3*DirW +: SegW];
-  wire [TagW-1:0]   tag6_q = dc_out[DcW-1 -: TagW];
+  wire [PTagW-1:0]  tag6_q = dc_out[DcW-1 -: PTagW];
 
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -290,7 +297,7 @@ module rpu_sphere #(
   // ---------------------------------------------------------------------------------------------
   // The square root; the context rides in its tag.
   // ---------------------------------------------------------------------------------------------
-  localparam integer CtxW   = TagW + SegW + 3 * DirW + 3 * CW + 1;  // {tag, seg, v̂, h, sovf}
+  localparam integer CtxW   = PTagW + SegW + 3 * DirW + 3 * CW + 1;  // {tag, seg, v̂, h, sovf}
   localparam integer SqTagW = CtxW + TcW + 1;
   wire              sq_valid;
   wire [HcW-1:0]    sq_root;
@@ -341,7 +348,7 @@ module rpu_sphere #(
   wire                  pred1 = ~neg7_q & ~t2[TpW-1] & (|t2);
 
   // The outputs that ride along to the end: {tag, tc, hc, pred1}.
-  localparam integer OutW = TagW + TcW + HcW + 1;
+  localparam integer OutW = PTagW + TcW + HcW + 1;
 
   reg [TpW-1:0]    t1_8_q;
   reg [TpW-1:0]    t2_8_q;
@@ -358,7 +365,7 @@ module rpu_sphere #(
     v8_q    <= ctx7_q[1+3*CW +: 3*DirW];
     h8_q    <= ctx7_q[1 +: 3*CW];
     sovf8_q <= ctx7_q[0];
-    out8_q  <= {ctx7_q[CtxW-1 -: TagW], tc7_q, hc7_q, pred1};
+    out8_q  <= {ctx7_q[CtxW-1 -: PTagW], tc7_q, hc7_q, pred1};
     seg8_q  <= ctx7_q[1+3*CW+3*DirW +: SegW];
   end
 
@@ -570,7 +577,7 @@ module rpu_sphere #(
   wire ovf_r   = res[ResW-OutW-1];
 
   assign valid_o      = alpha_valid;
-  assign tag_o        = res[ResW-1 -: TagW];
+  assign ptag_out     = res[ResW-1 -: PTagW];
   assign tc_o         = res[ResTcO +: TcW];
   assign half_chord_o = res[ResHcO +: HcW];
   assign pred1_o      = pred1_r;

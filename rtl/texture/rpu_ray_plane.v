@@ -17,6 +17,8 @@
 //   1        p0 = h + floor(v̂·t0 / 2^FV), the range test; p0 − h, −h_z (zero when not valid)
 //   LatD     (p0 − h)_k·W_k, −h_z·W_z       rpu_mul (CW+1) × (FE+18): 3 at the defaults
 //   1        depth = the sum of the three products (zero when not valid); outputs registered
+// A tag_i of 32 bits or more waits in an rpu_tag_queue beside the stages instead ("tag_i" above is
+// then one constant bit).
 //
 // Widths: t0 < 2^(CW+1) and |v̂_k| ≤ 2^(FV+1) give |floor(v̂_k·t0 / 2^FV)| ≤ 2^(CW+2) (CW+3 bits
 // signed) and h + that within CW+4 bits: the range test sees the exact sum for every port value.
@@ -62,7 +64,8 @@ module rpu_ray_plane #(
   localparam integer SW    = PW + 2;         // the sum of three
   // Side band through rpu_div: {tag, ok, −h_z, W, v̂_y, v̂_x, h_y, h_x}.
   localparam integer SbDataW = DqW + 3 * EdgeW + 2 * DirW + 2 * CW;  // {−h_z, W, v̂_y, v̂_x, h_y, h_x}
-  localparam integer SbW     = TagW + 1 + SbDataW;
+  localparam integer PTagW   = `RPU_PTAGW(TagW);  // the tag the stages carry (rpu_tag_queue)
+  localparam integer SbW     = PTagW + 1 + SbDataW;
 
   initial begin
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_ray_plane: CoordW must be in 12..40");
@@ -78,6 +81,11 @@ module rpu_ray_plane #(
   localparam integer LatD  = `RPU_MUL_LAT(DqW, EdgeW, 1);
   // The unit's latency (what the enclosing units count on; ref::ray_plane_latency).
   localparam integer Latency = CoordW + 5 + LatPt + LatD;
+  // The caller's tag: a wide one waits in a queue (rpu_tag_queue), the stages carry PTagW bits.
+  wire [PTagW-1:0] ptag_in, ptag_out;
+  rpu_tag_queue #(.TagW(TagW), .Latency(Latency)) u_tagq (
+    .clk_i, .rst_ni, .valid_i, .tag_i, .ptag_o(ptag_in), .out_valid_i(valid_o), .ptag_i(ptag_out),
+    .tag_o);
 
   // ---- stage 0: |h_z|, |v̂_z|, the sign test; −h_z ----
   wire signed [CW-1:0]   hz = eye_i[2*CW +: CW];
@@ -99,9 +107,9 @@ module rpu_ray_plane #(
   wire [DirW-1:0]   s0_vz_abs_q;
   wire              s0_sign_ok_q;
   wire [SbDataW-1:0] s0_sb_q;
-  wire [TagW-1:0]   s0_tag_q;
-  rpu_stage #(.W(CW + DirW + 1 + SbDataW + TagW)) u_s0 (
-    .clk_i, .rst_ni, .valid_i, .d_i({hz_abs, vz_abs, sign_ok, sb_data, tag_i}),
+  wire [PTagW-1:0]  s0_tag_q;
+  rpu_stage #(.W(CW + DirW + 1 + SbDataW + PTagW)) u_s0 (
+    .clk_i, .rst_ni, .valid_i, .d_i({hz_abs, vz_abs, sign_ok, sb_data, ptag_in}),
     .valid_o(s0_valid_q), .q_o({s0_hz_abs_q, s0_vz_abs_q, s0_sign_ok_q, s0_sb_q, s0_tag_q}));
 
   // ---- stage 1: the quotient fits CW+1 bits iff num >> (CW+1) < |v̂_z| (then rpu_div's
@@ -126,7 +134,7 @@ module rpu_ray_plane #(
   rpu_div #(.NumW(NumW), .DenW(DirW), .QuotW(QuotW), .TagW(SbW)) u_div (
     .clk_i, .rst_ni, .valid_i(s1_valid_q), .num_i(s1_num_q), .den_i(s1_den_q),
     .tag_i(s1_sb_q), .valid_o(dv_valid), .quot_o(t0), .tag_o(dv_sb));
-  wire [TagW-1:0]        dv_tag;
+  wire [PTagW-1:0]       dv_tag;
   wire                   dv_ok;
   wire signed [DqW-1:0]  dv_nhz;
   wire [EdgeW-1:0]       dv_wz, dv_wy, dv_wx;
@@ -135,7 +143,7 @@ module rpu_ray_plane #(
   assign {dv_tag, dv_ok, dv_nhz, dv_wz, dv_wy, dv_wx, dv_vy, dv_vx, dv_hy, dv_hx} = dv_sb;
 
   // ---- v̂_x·t0, v̂_y·t0 (exact; t0 as a non-negative signed operand); the rest in x's tag ----
-  localparam integer PtTagW = TagW + 1 + DqW + 3 * EdgeW + 2 * CW;
+  localparam integer PtTagW = PTagW + 1 + DqW + 3 * EdgeW + 2 * CW;
   wire [QuotW:0]      t0_s = {1'b0, t0};
   wire [PtW-1:0]      ptx, pty;
   wire                pt_valid;
@@ -145,7 +153,7 @@ module rpu_ray_plane #(
     .clk_i, .rst_ni, .valid_i(dv_valid), .a_i(t0_s), .b_i({dv_vy, dv_vx}),
     .tag_i({dv_tag, dv_ok, dv_nhz, dv_wz, dv_wy, dv_wx, dv_hy, dv_hx}),
     .valid_o(pt_valid), .p_o({pty, ptx}), .tag_o(pt_tag));
-  wire [TagW-1:0]       pt_tg;
+  wire [PTagW-1:0]      pt_tg;
   wire                  pt_ok;
   wire signed [DqW-1:0] pt_nhz;
   wire [EdgeW-1:0]      pt_wz, pt_wy, pt_wx;
@@ -170,15 +178,15 @@ module rpu_ray_plane #(
   wire [2*CW-1:0]   sb_p0_q;   // {p0_y, p0_x}
   wire [3*DqW-1:0]  sb_dq_q;   // {−h_z, p0_y − h_y, p0_x − h_x}
   wire [3*EdgeW-1:0] sb_w_q;   // {W_z, W_y, W_x}
-  wire [TagW-1:0]   sb_tag_q;
-  rpu_stage #(.W(1 + 2*CW + 3*DqW + 3*EdgeW + TagW)) u_sb (
+  wire [PTagW-1:0]  sb_tag_q;
+  rpu_stage #(.W(1 + 2*CW + 3*DqW + 3*EdgeW + PTagW)) u_sb (
     .clk_i, .rst_ni, .valid_i(pt_valid),
     .d_i({ok, ok ? {p0y[CW-1:0], p0x[CW-1:0]} : {2*CW{1'b0}},
           ok ? {pt_nhz, fy[DqW-1:0], fx[DqW-1:0]} : {3*DqW{1'b0}}, pt_wz, pt_wy, pt_wx, pt_tg}),
     .valid_o(sb_valid_q), .q_o({sb_ok_q, sb_p0_q, sb_dq_q, sb_w_q, sb_tag_q}));
 
   // ---- the three depth products (exact); {tag, ok, p0} in x's tag ----
-  localparam integer DTagW = TagW + 1 + 2 * CW;
+  localparam integer DTagW = PTagW + 1 + 2 * CW;
   wire [PW-1:0]      px, py, pz;
   wire               d_valid;
   wire [DTagW-1:0]   d_tag;
@@ -192,10 +200,10 @@ module rpu_ray_plane #(
   rpu_add3 #(.W(SW)) u_dsum (
     .a_i({{2{px[PW-1]}}, px}), .b_i({{2{py[PW-1]}}, py}), .c_i({{2{pz[PW-1]}}, pz}), .s_o(dsum));
   wire [DepthW-1:0] depth = {{(DepthW - SW){dsum[SW-1]}}, dsum};
-  rpu_stage #(.W(1 + 3*CW + DepthW + TagW)) u_out (
+  rpu_stage #(.W(1 + 3*CW + DepthW + PTagW)) u_out (
     .clk_i, .rst_ni, .valid_i(d_valid),
-    .d_i({d_tag[2*CW], {CW{1'b0}}, d_tag[2*CW-1:0], depth, d_tag[DTagW-1 -: TagW]}),
-    .valid_o, .q_o({p0_valid_o, p0_o, depth_o, tag_o}));
+    .d_i({d_tag[2*CW], {CW{1'b0}}, d_tag[2*CW-1:0], depth, d_tag[DTagW-1 -: PTagW]}),
+    .valid_o, .q_o({p0_valid_o, p0_o, depth_o, ptag_out}));
 
   // The products' top bits are sign copies, their low FV bits the floor's dropped fraction; the
   // bits of p0 − h above DqW only matter for an invalid point (caught by the range test).

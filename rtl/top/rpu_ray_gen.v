@@ -20,7 +20,9 @@
 //   FV+3     rpu_div:  1/|v|                     (the same side band in its tag)
 //   L3       v·(1/|v|)                     rpu_mul (FV+4) × (FV+4): 4 (the side band in its tag)
 //   1        v̂; E_right, E_bottom; outputs registered
-// Every input is sampled with valid_i (the camera ports may change between pixels).
+// Every input is sampled with valid_i (the camera ports may change between pixels). A tag_i of 32
+// bits or more waits in an rpu_tag_queue beside the stages instead ("tag_i" above is then one
+// constant bit).
 //
 // Preconditions (checked by the scene compiler, as the model assumes): every pixel's direction
 // v0 + i·dx + j·dy fits Q(4.FV+14) (the model checks the image corners: |component| < 8), and
@@ -75,7 +77,9 @@ module rpu_ray_gen #(
   localparam integer SbEt  = SbEl + 3 * EdgeOutW;
   localparam integer SbSw  = SbEt + 3 * EdgeOutW;
   localparam integer SbTag = SbSw + 3 * EgW;
-  localparam integer SbW   = SbTag + TagW;
+  // The caller's tag: a wide one waits in a queue (rpu_tag_queue), the stages carry PTagW bits.
+  localparam integer PTagW = `RPU_PTAGW(TagW);
+  localparam integer SbW   = SbTag + PTagW;
 
   initial begin
     if (DirFrac < 8 || DirFrac > 40) $fatal(1, "rpu_ray_gen: DirFrac must be in 8..40");
@@ -95,9 +99,13 @@ module rpu_ray_gen #(
   localparam integer L3 = `RPU_MUL_LAT(QuotW + 1, VW, 1);
   // The unit's latency (what the enclosing units count on).
   localparam integer Latency = 2 * DirFrac + 10 + L1 + L2 + L3;
+  wire [PTagW-1:0] ptag_in, ptag_out;
+  rpu_tag_queue #(.TagW(TagW), .Latency(Latency)) u_tagq (
+    .clk_i, .rst_ni, .valid_i, .tag_i, .ptag_o(ptag_in), .out_valid_i(valid_o), .ptag_i(ptag_out),
+    .tag_o);
 
   // ---- the products i·dx, j·dy, i·σW, j·σW (pixel indices as non-negative signed operands) ----
-  localparam integer C1W = TagW + 3 * EgW + 6 * EgW + 3 * VgW;  // {tag, σW, et0, el0, v0}
+  localparam integer C1W = PTagW + 3 * EgW + 6 * EgW + 3 * VgW;  // {tag, σW, et0, el0, v0}
   localparam integer IW  = IdxW + 1;
   wire [IW-1:0]       i_s = {1'b0, i_i};
   wire [IW-1:0]       j_s = {1'b0, j_i};
@@ -111,7 +119,7 @@ module rpu_ray_gen #(
   wire                m1b_tag;
   rpu_mul_vec #(.Count(6), .AW(VgW), .BW(IW), .Signed(1), .TagW(C1W), .Latency(L1)) u_dir (
     .clk_i, .rst_ni, .valid_i, .a_i({dy_i, dx_i}), .b_i({{3{j_s}}, {3{i_s}}}),
-    .tag_i({tag_i, sw_i, et0_i, el0_i, v0_i}), .valid_o(m1_valid), .p_o(p_v), .tag_o(c1));
+    .tag_i({ptag_in, sw_i, et0_i, el0_i, v0_i}), .valid_o(m1_valid), .p_o(p_v), .tag_o(c1));
   rpu_mul_vec #(.Count(6), .AW(EgW), .BW(IW), .Signed(1), .TagW(1), .Latency(L1)) u_edge (
     .clk_i, .rst_ni, .valid_i, .a_i({sw_i, sw_i}), .b_i({{3{j_s}}, {3{i_s}}}), .tag_i(1'b0),
     .valid_o(m1b_valid), .p_o({swj, swi}), .tag_o(m1b_tag));
@@ -131,7 +139,7 @@ module rpu_ray_gen #(
   wire [3*EgW-1:0] el0_1 = c1[3*VgW +: 3*EgW];
   wire [3*EgW-1:0] et0_1 = c1[3*VgW+3*EgW +: 3*EgW];
   wire [3*EgW-1:0] sw_1  = c1[3*VgW+6*EgW +: 3*EgW];
-  wire [TagW-1:0]  tag_1 = c1[C1W-1 -: TagW];
+  wire [PTagW-1:0] tag_1 = c1[C1W-1 -: PTagW];
 
   // ---- stage 2: v = floor((v0 + i·dx + j·dy) / 2^G) (a sum of three modulo 2^VgW, rpu_add3),
   // the named truncation to Q(4.FV); E_left, E_top (exact) ----
@@ -227,10 +235,10 @@ module rpu_ray_gen #(
       wire unused_prd = ^{pc[PrdW-1:DirFrac+2+VhW], pc[DirFrac+1:0]};
     end
   endgenerate
-  rpu_stage #(.W(3*VW + 3*VhW + 4*3*EdgeOutW + TagW)) u_out (
+  rpu_stage #(.W(3*VW + 3*VhW + 4*3*EdgeOutW + PTagW)) u_out (
     .clk_i, .rst_ni, .valid_i(m3_valid),
-    .d_i({c3[SbV +: 3*VW], o_vhat, o_el, o_er, o_et, o_eb, c3[SbTag +: TagW]}),
-    .valid_o, .q_o({v_o, vhat_o, e_left_o, e_right_o, e_top_o, e_bottom_o, tag_o}));
+    .d_i({c3[SbV +: 3*VW], o_vhat, o_el, o_er, o_et, o_eb, c3[SbTag +: PTagW]}),
+    .valid_o, .q_o({v_o, vhat_o, e_left_o, e_right_o, e_top_o, e_bottom_o, ptag_out}));
 `ifndef SYNTHESIS
   // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
   rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_ray_gen")) u_latency_check (

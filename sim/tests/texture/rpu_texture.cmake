@@ -7,8 +7,8 @@
 # pixels: the compiler refuses finer ones at DirFrac 12), the texture unit
 # with pre-shifted guide roots (SqrtW 40; CoordW 16 with SqrtW 32 and a 3-bit tag).
 rpu_verilated_test(tb_rpu_ray_plane TOP rpu_ray_plane TB tb/texture/tb_rpu_ray_plane.cpp
-                   PARAMS -GTagW=8
-                   DEFS TAG_W=8)
+                   PARAMS -GTagW=40
+                   DEFS TAG_W=40)
 rpu_verilated_test(tb_rpu_ray_plane_cw16_fv12 EXTRA TOP rpu_ray_plane
                    TB tb/texture/tb_rpu_ray_plane.cpp
                    PARAMS -GCoordW=16 -GDirFrac=12 -GEdgeFrac=12
