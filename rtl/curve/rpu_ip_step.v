@@ -9,8 +9,9 @@
 // sums sd_j = md_j + md_{j+1} go through a lowest-index argmin η, and the next state is
 //   τ' = τ + η·D,  lo'.md = md_η,  hi'.md = md_{η+1},  Q' = Q_η,  S' = S + (2η·q2)·D.
 // Step = k wired in (unrolled pipeline), or Step = 0: k comes with the item (iterative form:
-// variable shifts, rpu_candidate with Fo = 0). The state, constants and context wait in a
-// slot-indexed RAM while the candidates run (candidate 1 carries the slot). Fixed latency: three
+// variable shifts, rpu_candidate with Fo = 0). The state, constants and context wait in two
+// slot-indexed RAMs while the candidates run (candidate 1 carries the slot): side band A, read as
+// the candidates leave, and side band B, read after the multiples of η. Fixed latency: three
 // input stages, the candidate's, the pair sums, the compares and η, the η multiples, the moved
 // state (two stages).
 `default_nettype none
@@ -120,22 +121,35 @@ module rpu_ip_step #(
   wire [7:0]    fo_raw = `RPU_FOB + N1[7:0] * k_in[7:0];
   wire [4:0]    fo_in = fo_raw > `RPU_FOMAX ? 5'd`RPU_FOMAX : fo_raw[4:0];
 
-  // The side band: the state, constants and context the step's end needs.
-  localparam integer SbW = KW + 8 + StW + FsW + PcW + FgW + CtxW + TagW;
-  wire [SbW-1:0] sb_in = {k_in, sh_in, state_i, fs_i, pc_i, fg_i, ctx_i, tag_i};
-  // It waits in a RAM of 2^SlotW slots (distributed RAM), written as the item enters, read by the
-  // slot candidate 1 brings back. The path is in order and at most one item enters per cycle, so
-  // a slot is read before it is written again while at most 2^SlotW items are between the write
-  // and the read: the three input stages and the candidate, whose latency is largest at Fo = 0,
-  // Metric = 0, SqrtW = 0 (56 cycles; its widths are otherwise fixed), so at most 60 items
-  // (checked in simulation below). Nothing of it rides the candidates' stages.
+  // The side band: the state, constants and context the step's end needs, in two parts by
+  // where they are needed (named layouts, LSB first):
+  //   A, read as the candidates leave: {SA2, SA1, SW, pc, state, shift}: the md's for the pair
+  //     sums, τ, and what the multiples of η take;
+  //   B, read after the multiples: {tag, ctx, fg, fs, k}: what the moves add to and the output.
+  localparam integer AsA2O = 0, AsA1O = AsA2O + SAW, AsSwO = AsA1O + SAW, AsPcO = AsSwO + SSW;
+  localparam integer AsStO = AsPcO + PcW, AsShO = AsStO + StW, SaW = AsShO + 8;
+  localparam integer BsTagO = 0, BsCtxO = BsTagO + TagW, BsFgO = BsCtxO + CtxW;
+  localparam integer BsFsO = BsFgO + FgW, BsKO = BsFsO + FsW, SbW = BsKO + KW;
+  wire [SaW-1:0] sa_in = {sh_in, state_i, pc_i, fs_i[oSW +: SSW], fs_i[oSA1 +: SAW],
+                          fs_i[oSA2 +: SAW]};
+  wire [SbW-1:0] sb_in = {k_in, fs_i, fg_i, ctx_i, tag_i};
+  // Both wait in RAMs of 2^SlotW slots (distributed RAM), written as the item enters, read by
+  // the slot candidate 1 brings back (A) and that slot two stages later (B). The path is in order
+  // and at most one item enters per cycle, so a slot is read before it is written again while at
+  // most 2^SlotW items are between the write and the last read: the three input stages, the
+  // candidate, whose latency is largest at Fo = 0, Metric = 0, SqrtW = 0 (56 cycles; its widths
+  // are otherwise fixed), and three stages, so at most 62 items (checked in simulation below).
+  // Nothing of them rides the candidates' stages; after the candidates only what the next stage
+  // computes with rides (the slot, the shift, τ, the md's, pc).
   localparam integer SlotW = 6;
   reg [SlotW-1:0] slot_q;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni)      slot_q <= {SlotW{1'b0}};
     else if (valid_i) slot_q <= slot_q + 1'b1;
   end
+  reg [SaW-1:0] sa_ram [0:(1 << SlotW) - 1];
   reg [SbW-1:0] sb_ram [0:(1 << SlotW) - 1];
+  always @(posedge clk_i) if (valid_i) sa_ram[slot_q] <= sa_in;
   always @(posedge clk_i) if (valid_i) sb_ram[slot_q] <= sb_in;
 
   // ---- input stages 1–3: the candidates' polynomial values ----
@@ -285,25 +299,25 @@ module rpu_ip_step #(
     end
   endgenerate
   // ---- the pair sums sd_j = md_j + md_{j+1} (md_0 = lo.md, md_J = hi.md), registered ----
-  // With Step wired in, k and the shift are constants: taken as such, not from the RAM (through
+  // With Step wired in, k and the shift are constants: taken as such, not from the RAMs (through
   // which no synthesis propagates a constant), so the moves below shift by constants.
-  localparam integer KsW = KW + 8;  // {k, shift} at the top of the side band
-  wire [SbW-1:0] sb_q = sb_ram[slot_out[SlotW-1:0]];
-  wire [SbW-1:0] sb_c = {Step == 0 ? sb_q[SbW-1 -: KsW] : {k_in, sh_in}, sb_q[0 +: SbW-KsW]};
+  wire [SaW-1:0] sa_q = sa_ram[slot_out[SlotW-1:0]];
+  wire [SaW-1:0] sa_c = {Step == 0 ? sa_q[AsShO +: 8] : sh_in, sa_q[0 +: AsShO]};
+  wire           valid_p;      // the multiples' stage (below): side band B is read there
+  wire [SlotW-1:0] slot_p;
 `ifndef SYNTHESIS
 `ifndef FORMAL
-  // Items between the RAM's write and its read: never more than its slots.
+  // Items between the RAMs' write and their last read: never more than their slots.
   integer in_flight = 0;
   always @(posedge clk_i) begin
-    in_flight <= in_flight + (valid_i ? 1 : 0) - (c_valid[0] ? 1 : 0);
+    in_flight <= in_flight + (valid_i ? 1 : 0) - (valid_p ? 1 : 0);
     if (in_flight > (1 << SlotW))
       $fatal(1, "rpu_ip_step: %0d items in flight over %0d side-band slots", in_flight,
              1 << SlotW);
   end
 `endif
 `endif
-  localparam integer oSt = FsW + PcW + FgW + CtxW + TagW;  // the state in the side band
-  wire [StW-1:0] st_c = sb_c[oSt +: StW];
+  wire [StW-1:0] st_c = sa_c[AsStO +: StW];
   wire [MdW-1:0] md_a [0:J];
   assign md_a[0] = st_c[MdW +: MdW];
   assign md_a[J] = st_c[0 +: MdW];
@@ -313,7 +327,8 @@ module rpu_ip_step #(
     end
   endgenerate
   reg                    valid_r;
-  reg [SbW-1:0]          sb_r;
+  reg [SaW-1:0]          sa_r;
+  reg [SlotW-1:0]        slot_r;
   reg [(J-1)*MdW-1:0]    c_md_r;
   reg                    ovf_r;
   reg [MdW:0]            sd [0:J-1];
@@ -322,15 +337,15 @@ module rpu_ip_step #(
     if (!rst_ni) valid_r <= 1'b0;
     else         valid_r <= c_valid[0];
   end
-  // (sb_r loads only with a valid item: a clock enable keeps it a flip-flop, so the pair sums'
+  // (sa_r loads only with a valid item: a clock enable keeps it a flip-flop, so the pair sums'
   // compares and η's stage do not start at a slow shift-register LUT output)
-  always @(posedge clk_i) if (c_valid[0]) sb_r <= sb_c;
+  always @(posedge clk_i) if (c_valid[0]) {slot_r, sa_r} <= {slot_out[SlotW-1:0], sa_c};
   always @(posedge clk_i) begin
     c_md_r <= c_md;
     ovf_r  <= |{c_ovf, c_isat};
     for (q = 0; q < J; q = q + 1) sd[q] <= {1'b0, md_a[q]} + {1'b0, md_a[q+1]};
   end
-  wire [StW-1:0] st_r = sb_r[oSt +: StW];
+  wire [StW-1:0] st_r = sa_r[AsStO +: StW];
   wire [MdW-1:0] md [0:J];
   assign md[0] = st_r[MdW +: MdW];
   assign md[J] = st_r[0 +: MdW];
@@ -394,32 +409,32 @@ module rpu_ip_step #(
   end
   wire             valid_h;
   wire [N1-1:0]    eta_h;
-  wire [15:0]      eta_sq_h;
+  wire [2*N1-1:0]  eta_sq_h;  // η² < J² = 2^(2·N1): only its real bits cross the stage
   wire [2*MdW-1:0] mds_h;
   wire             ovf_h;
-  wire [SbW-1:0]   sb_h;
+  wire [SlotW-1:0] slot_h;
+  wire [SaW-1:0]   sa_h;
   // (Hold: flip-flops, so the η multiples below do not start at the slow output of the
   // shift-register LUTs the side band's delay line becomes)
-  rpu_stage #(.W(N1 + 16 + 2*MdW + 1 + SbW), .Hold(1)) u_eta (
-    .clk_i, .rst_ni, .valid_i(valid_r), .d_i({eta, eta_sq, lo_md_n, hi_md_n, ovf_r, sb_r}),
-    .valid_o(valid_h), .q_o({eta_h, eta_sq_h, mds_h, ovf_h, sb_h}));
+  rpu_stage #(.W(N1 + 2*N1 + 2*MdW + 1 + SlotW + SaW), .Hold(1)) u_eta (
+    .clk_i, .rst_ni, .valid_i(valid_r),
+    .d_i({eta, eta_sq[2*N1-1:0], lo_md_n, hi_md_n, ovf_r, slot_r, sa_r}),
+    .valid_o(valid_h), .q_o({eta_h, eta_sq_h, mds_h, ovf_h, slot_h, sa_h}));
 
   // ---- the state moved by η: three stages (the multiples of η and η², the shifted terms, the
   //      sums) ----
-  localparam integer oSh = SbW - KW - 8;  // the shift, below k
-  wire [StW-1:0] st_h = sb_h[oSt +: StW];
-  localparam integer oFs = PcW + FgW + CtxW + TagW, oPc = FgW + CtxW + TagW;
-  wire [FsW-1:0] fs_h = sb_h[oFs +: FsW];
-  wire [PcW-1:0] pc_h = sb_h[oPc +: PcW];
+  wire [StW-1:0] st_h = sa_h[AsStO +: StW];
+  wire [PcW-1:0] pc_h = sa_h[AsPcO +: PcW];
   wire [15:0] e1 = {{(16-N1){1'b0}}, eta_h};
-  wire [15:0] e2 = eta_sq_h;
+  wire [15+2*N1:0] e2x = {16'd0, eta_sq_h};  // zero-extended (no zero-width replication)
+  wire [15:0] e2 = e2x[15:0];
   wire [XW-1:0]  hpx1 = pc_h[pX1 +: XW], hpy1 = pc_h[pY1 +: XW];
   wire [TW-1:0]  hpbe = pc_h[pB +: TW];
   wire [CaW-1:0] hpc2b = pc_h[pC2B +: CaW], hps2b = pc_h[pS2B +: CaW];
   wire [W2W-1:0] hpw2 = pc_h[pW2 +: W2W];
   wire [A2W-1:0] hpa12 = pc_h[pA12 +: A2W], hpa22 = pc_h[pA22 +: A2W];
-  wire [SSW-1:0] hfSW = fs_h[oSW +: SSW];
-  wire [SAW-1:0] hfSA1 = fs_h[oSA1 +: SAW], hfSA2 = fs_h[oSA2 +: SAW];
+  wire [SSW-1:0] hfSW = sa_h[AsSwO +: SSW];
+  wire [SAW-1:0] hfSA1 = sa_h[AsA1O +: SAW], hfSA2 = sa_h[AsA2O +: SAW];
   wire [127:0] hx1 = `RPU_SX(hpx1, XW), hy1 = `RPU_SX(hpy1, XW), hbe = `RPU_SX(hpbe, TW);
   wire [127:0] hc2b = `RPU_SX(hpc2b, CaW), hs2b = `RPU_SX(hps2b, CaW), hw2 = `RPU_SX(hpw2, W2W);
   wire [127:0] ha12 = `RPU_SX(hpa12, A2W), ha22 = `RPU_SX(hpa22, A2W);
@@ -439,21 +454,25 @@ module rpu_ip_step #(
   // τ' = τ + η·D (the bits η lands on are zero in τ)
   // (with Step wired in, the shift is a constant, not the value the stages carried: a hierarchical
   // synthesis cannot see through the stages, and a carried shift would be a barrel shifter)
-  wire [7:0]   sh_h = Step == 0 ? sb_h[oSh +: 8] : sh_in;
+  wire [7:0]   sh_h = Step == 0 ? sa_h[AsShO +: 8] : sh_in;
   wire [N-1:0] tau_h = st_h[StW-1 -: N];
   wire [N+15:0] tau_n = {16'd0, tau_h} + ({{N{1'b0}}, e1} << sh_h);
-  wire             valid_p;
   wire [MW-1:0]    mult_p;
   wire [N-1:0]     tau_p;
   wire [2*MdW-1:0] mds_p;
   wire             ovf_p;
-  wire [SbW-1:0]   sb_p;
-  rpu_stage #(.W(MW + N + 2*MdW + 1 + SbW)) u_mult (
-    .clk_i, .rst_ni, .valid_i(valid_h), .d_i({mult, tau_n[N-1:0], mds_h, ovf_h, sb_h}),
-    .valid_o(valid_p), .q_o({mult_p, tau_p, mds_p, ovf_p, sb_p}));
+  wire [7:0]       shc_p;
+  wire [PcW-1:0]   pc_p;
+  rpu_stage #(.W(MW + N + 2*MdW + 1 + SlotW + 8 + PcW)) u_mult (
+    .clk_i, .rst_ni, .valid_i(valid_h),
+    .d_i({mult, tau_n[N-1:0], mds_h, ovf_h, slot_h, sa_h[AsShO +: 8], pc_h}),
+    .valid_o(valid_p), .q_o({mult_p, tau_p, mds_p, ovf_p, slot_p, shc_p, pc_p}));
+  // Side band B, read by the slot beside the terms.
+  wire [SbW-1:0] sb_q = sb_ram[slot_p];
+  wire [SbW-1:0] sb_c = {Step == 0 ? sb_q[BsKO +: KW] : k_in, sb_q[0 +: BsKO]};
   // Terms of the move, in the fields' order and widths: a multiple times D = 2^sh, η² ones
   // times D².
-  wire [7:0] sh_p = Step == 0 ? sb_p[oSh +: 8] : sh_in;
+  wire [7:0] sh_p = Step == 0 ? shc_p : sh_in;
   wire [XSW-1:0] uX, uY;
   wire [TSW-1:0] uT;
   wire [CSW-1:0] uC, uS;
@@ -481,11 +500,12 @@ module rpu_ip_step #(
   wire [N-1:0]     tau_m;
   wire [2*MdW-1:0] mds_m;
   wire             ovf_m;
+  wire [PcW-1:0]   pc_m;
   wire [SbW-1:0]   sb_m;
-  rpu_stage #(.W(FsW + N + 2*MdW + 1 + SbW)) u_terms (
-    .clk_i, .rst_ni, .valid_i(valid_p), .d_i({terms, tau_p, mds_p, ovf_p, sb_p}),
-    .valid_o(valid_m), .q_o({terms_m, tau_m, mds_m, ovf_m, sb_m}));
-  wire [FsW-1:0] fs_m = sb_m[oFs +: FsW];
+  rpu_stage #(.W(FsW + N + 2*MdW + 1 + PcW + SbW)) u_terms (
+    .clk_i, .rst_ni, .valid_i(valid_p), .d_i({terms, tau_p, mds_p, ovf_p, pc_p, sb_c}),
+    .valid_o(valid_m), .q_o({terms_m, tau_m, mds_m, ovf_m, pc_m, sb_m}));
+  wire [FsW-1:0] fs_m = sb_m[BsFsO +: FsW];
   // Field-wise sums (each field wraps within its own width; the values fit).
   wire [FsW-1:0] fs_n;
   `define RPU_STEP_ADD(O, W) assign fs_n[O +: W] = fs_m[O +: W] + terms_m[O +: W];
@@ -503,15 +523,15 @@ module rpu_ip_step #(
   `undef RPU_STEP_ADD
   rpu_stage #(.W(KW + StW + FsW + PcW + FgW + 1 + CtxW + TagW)) u_out (
     .clk_i, .rst_ni, .valid_i(valid_m),
-    .d_i({Step == 0 ? sb_m[SbW-1 -: KW] : k_in, tau_m, mds_m, fs_n, sb_m[oPc +: PcW], sb_m[CtxW+TagW +: FgW], ovf_m,
-          sb_m[0 +: CtxW+TagW]}),
+    .d_i({sb_m[BsKO +: KW], tau_m, mds_m, fs_n, pc_m, sb_m[BsFgO +: FgW], ovf_m,
+          sb_m[BsCtxO +: CtxW], sb_m[BsTagO +: TagW]}),
     .valid_o, .q_o({k_o, state_o, fs_o, pc_o, fg_o, ovf_o, ctx_o, tag_o}));
 
   wire unused = ^{c_valid[J-2:0], valid_3h_unused, st_r[StW-1 -: N],
-                  st_c[StW-1 -: N], fs_h, sb_c, sb_q[SbW-1 -: KsW], tau_n[N+15:N],
-                  e2[15:0], mX, mY, mT, mC, mS, mSW, mW2, mW1, mSA1, mA12, mA11, mSA2, mA22,
+                  st_c[StW-1 -: N], sa_c, sa_q[AsShO +: 8], sb_q[BsKO +: KW], tau_n[N+15:N],
+                  e2[15:0], e2x, mX, mY, mT, mC, mS, mSW, mW2, mW1, mSA1, mA12, mA11, mSA2, mA22,
                   mA21, tX, tY, tT, tC, tS, tW, tSW, tA1, tSA1, tA2, tSA2, hx1, st_h[2*MdW-1:0],
-                  sb_m, sb_p};
+                  sa_r, sa_h, shc_p};
 `undef RPU_SX
 endmodule
 
