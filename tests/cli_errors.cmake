@@ -65,6 +65,9 @@ expect_error("sqrt width name unknown" "--sqrt-w;must be exact or an integer, go
 expect_error("unknown backend" "--backend;warp" render builtin:ellipse6 --backend warp -o ${OUT}/x.png)
 # Patches (docs/algorithms.md §4): the fixed-point model and the RTL have no path for them; bad
 # patch flags.
+# A build without the surface path refuses a scene with surfaces (never an image without them).
+expect_error("surfaces off, ref" "builtin:surf_mix: surfaces;2 surfaces;no surface path (--surfaces off)"
+             render builtin:surf_mix --backend ref --surfaces off -o ${OUT}/x.png)
 expect_error("patches on ref" "builtin:column: patches;the ref backend has no fixed-point path"
              render builtin:column --backend ref --size 16x16 -o ${OUT}/x.png)
 expect_error("patches on rtl" "builtin:column: patches;the rtl backend has no fixed-point path"

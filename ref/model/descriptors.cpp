@@ -211,6 +211,14 @@ IVec3 Normalization::position(const Vec3& p) const {
           static_cast<i64>(std::llround(q.z))};
 }
 
+void require_built_kinds(const ModelScene& m) {
+  if (!m.params.surfaces && !m.surfaces.empty())
+    throw Error(m.source + ": surfaces",
+                fmt::format("the scene has {} surface{}, but this build has no surface path "
+                            "(--surfaces off): build it with --surfaces on, or drop the "
+                            "surfaces", m.surfaces.size(), m.surfaces.size() == 1 ? "" : "s"));
+}
+
 ModelScene quantize_scene(const scene::CompiledScene& sc, const HwParams& p) {
   p.validate();
   ModelScene m;

@@ -172,4 +172,10 @@ struct ModelScene {
 // than Precision::kRefuse LSBs), naming the segment or parameter and the width to raise.
 ModelScene quantize_scene(const scene::CompiledScene& scene, const HwParams& params);
 
+// Throws rpu::Error when the scene has a kind of primitive the parameters build no path for
+// (surfaces with `surfaces` off): the renderers call it, so such a build never returns an image
+// without those primitives. The hardware's own answer to such an item is
+// unbuilt_surface_result (model/top/rpu_top.h).
+void require_built_kinds(const ModelScene& m);
+
 }  // namespace rpu::ref

@@ -30,7 +30,7 @@ namespace hw_range {
 struct HwParams {
   // One member per entry of hw_params.def, with its default: n, n1, coord_w (CW), dir_frac (FV),
   // t_frac (FT), unit_frac (FU), edge_frac (FE), inv_w (IW), sqrt_w (SW), metric, unrolled (ip),
-  // surf_w (LW), angle_w (AW).
+  // surf_w (LW), angle_w (AW), surf_n1_first (n1s), surfaces.
 #define RPU_HW_PARAM(field, type, key, flag, verilog, symbol, def, ...) type field = def;
 #include "model/hw_params.def"
 #undef RPU_HW_PARAM

@@ -21,6 +21,7 @@ image::Frame render_ref(const scene::CompiledScene& sc, const ModelScene& m,
     throw Error(sc.source + ": patches", "the ref backend has no fixed-point path for parametric "
                                          "patches (docs/algorithms.md §4)");
   scene::check_surface_budget(sc);
+  require_built_kinds(m);
   const CameraDesc& cam = m.camera;
   image::Frame frame(cam.width, cam.height);
   const scene::ScreenBins bins(sc.camera, sc.curve_segments, 8, o.binning);

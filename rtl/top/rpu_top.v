@@ -47,6 +47,9 @@ module rpu_top #(
   parameter integer PrimW    = 16,  // primitive id width (1..31)
   parameter integer FifoLog2 = 10,  // log2 of the items in flight + waiting (2..12)
   // Surfaces (the surface path, rpu_surface_top, always in its iterative form).
+  parameter integer Surfaces = 1,   // 1: the surface path is built; 0: curves and textures only
+                                    // (a surface item is answered with no piece, no hit and
+                                    // the overflow bit; its descriptor write is ignored)
   parameter integer SurfW    = 24,  // LW: signed width of surface-local coordinates (16..36)
   parameter integer AngleW   = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
   parameter integer Turns    = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
@@ -146,6 +149,7 @@ module rpu_top #(
     if (IdxW < 1 || IdxW > 14) $fatal(1, "rpu_top: IdxW must be in 1..14");
     if (FifoLog2 < 2 || FifoLog2 > 12) $fatal(1, "rpu_top: FifoLog2 must be in 2..12");
     if (PrimW < 1 || PrimW > 31) $fatal(1, "rpu_top: PrimW must be in 1..31");
+    if (Surfaces < 0 || Surfaces > 1) $fatal(1, "rpu_top: Surfaces must be 0 or 1");
     if (SurfAddrW < 1 || SurfAddrW > SegAddrW)
       $fatal(1, "rpu_top: SurfAddrW must be in 1..SegAddrW");
     if (SegW != SegWords || CamW != CamWords || SurfDW != SfWords)
@@ -202,8 +206,14 @@ module rpu_top #(
   end
   // The ring's occupancy, mirrored here at the fixed distance (stage 0, the ray generator, the
   // surface RAM read, the setup) ahead of the ring (rpu_surface_admit: any fixed distance).
-  rpu_surface_admit #(.Period(SfPeriod), .Returns(SfPasses - 1)) u_ring_admit (
-    .clk_i, .rst_ni, .valid_i(in_valid && in_surf && credit), .ready_o(ring_ready));
+  generate
+    if (Surfaces != 0) begin : g_ring
+      rpu_surface_admit #(.Period(SfPeriod), .Returns(SfPasses - 1)) u_ring_admit (
+        .clk_i, .rst_ni, .valid_i(in_valid && in_surf && credit), .ready_o(ring_ready));
+    end else begin : g_no_ring
+      assign ring_ready = 1'b1;  // no ring: a surface item only waits for a credit
+    end
+  endgenerate
 
   // ---- stage 0: read the segment descriptor ----
   reg             v0_q;
@@ -463,20 +473,34 @@ module rpu_top #(
       {(6 + N + 3*CoordW + DepthW){1'b0}};
   wire unused_sf_abs = ^{sf_vhat_q, sf_q, f_sf_wr_unused};
 `else
-  rpu_surface_top #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
-                    .SqrtW(SqrtW), .EdgeFrac(EdgeFrac), .SurfW(SurfW), .AngleW(AngleW),
-                    .Turns(Turns), .N(N), .N1(N1), .N1First(N1First), .Indicators(Indicators),
-                    .Unrolled(0), .Admit(0), .TagW(ItW + PrimW)) u_surface (
-    .clk_i, .rst_ni, .eye_i(cam_eye), .w_i(cam_w), .valid_i(sf_v_q), .ready_o(sf_ready_unused),
-    .vhat_i(sf_vhat_q), .bound_c0_i(sf_q[SfC0O +: 3*CoordW]), .bound_r2_i(sf_q[SfR2O +: SfR2W]),
-    .origin_i(sf_q[SfOriginO +: 3*CoordW]), .to_local_i(sf_q[SfToLocO +: 9*SfMantW]),
-    .to_local_s_i(sf_q[SfToLocSO +: 7]), .y_min_i(sf_q[SfYMinO +: SurfW]),
-    .y_max_i(sf_q[SfYMaxO +: SurfW]), .end_angle_i(sf_q[SfEndAngO +: AngleW]),
-    .end_cos_i(sf_q[SfEndCosO +: SfConstW]), .end_sin_i(sf_q[SfEndSinO +: SfConstW]),
-    .desc_i(sf_q[SfDescO +: SfDescW]), .piece_i(sf_it_q[ItPcO +: 2]),
-    .tag_i({sf_it_q, sf_q[SfPrimO +: PrimW]}),
-    .valid_o(sf_valid), .piece_valid_o(sf_pv), .hit_o(sf_hit), .ovf_o(sf_ovf),
-    .pieces_o(sf_pcs), .tau_o(sf_tau), .x_o(sf_x), .depth_o(sf_depth), .tag_o(sf_tag));
+  generate
+    if (Surfaces != 0) begin : g_surface
+    rpu_surface_top #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
+                      .SqrtW(SqrtW), .EdgeFrac(EdgeFrac), .SurfW(SurfW), .AngleW(AngleW),
+                      .Turns(Turns), .N(N), .N1(N1), .N1First(N1First), .Indicators(Indicators),
+                      .Unrolled(0), .Admit(0), .TagW(ItW + PrimW)) u_surface (
+      .clk_i, .rst_ni, .eye_i(cam_eye), .w_i(cam_w), .valid_i(sf_v_q), .ready_o(sf_ready_unused),
+      .vhat_i(sf_vhat_q), .bound_c0_i(sf_q[SfC0O +: 3*CoordW]), .bound_r2_i(sf_q[SfR2O +: SfR2W]),
+      .origin_i(sf_q[SfOriginO +: 3*CoordW]), .to_local_i(sf_q[SfToLocO +: 9*SfMantW]),
+      .to_local_s_i(sf_q[SfToLocSO +: 7]), .y_min_i(sf_q[SfYMinO +: SurfW]),
+      .y_max_i(sf_q[SfYMaxO +: SurfW]), .end_angle_i(sf_q[SfEndAngO +: AngleW]),
+      .end_cos_i(sf_q[SfEndCosO +: SfConstW]), .end_sin_i(sf_q[SfEndSinO +: SfConstW]),
+      .desc_i(sf_q[SfDescO +: SfDescW]), .piece_i(sf_it_q[ItPcO +: 2]),
+      .tag_i({sf_it_q, sf_q[SfPrimO +: PrimW]}),
+      .valid_o(sf_valid), .piece_valid_o(sf_pv), .hit_o(sf_hit), .ovf_o(sf_ovf),
+      .pieces_o(sf_pcs), .tau_o(sf_tau), .x_o(sf_x), .depth_o(sf_depth), .tag_o(sf_tag));
+    end else begin : g_no_surface
+      // Not built: a surface item's word comes back one cycle after its descriptor stage with
+      // no piece, no hit and the overflow bit (the model's unbuilt_surface_result; the host
+      // refuses scenes with surfaces for such a build, docs/rtl.md).
+      assign sf_valid = sf_v_q;
+      assign sf_tag   = {sf_it_q, {PrimW{1'b0}}};
+      assign {sf_ready_unused, sf_pv, sf_hit, sf_pcs, sf_tau, sf_x, sf_depth} =
+          {(5 + N + 3*CoordW + DepthW){1'b0}};
+      assign sf_ovf   = 1'b1;
+      wire unused_sf_off = ^{sf_vhat_q, sf_q};
+    end
+  endgenerate
 `endif
   // X in the result's width (the curve point's): each component sign-extended.
   wire [3*XW-1:0] sf_xw;

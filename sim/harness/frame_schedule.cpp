@@ -207,11 +207,13 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
           const ref::SurfaceDesc& s = m->surfaces[k];
           const int pieces = ref::surface_piece_items(s.type);
           for (int q = 0; q < pieces; ++q) {
-            ItemResult e =
-                surface_result(ref::process_surface_piece(p, m->camera, ray.vhat, s, q));
+            // A build without the surface path answers every piece alike (rpu_top.h).
+            ItemResult e = surface_result(
+                p.surfaces ? ref::process_surface_piece(p, m->camera, ray.vhat, s, q)
+                           : ref::unbuilt_surface_result());
             e.seg = static_cast<std::uint32_t>(k);
             e.piece = q;
-            e.primitive = static_cast<std::uint32_t>(s.primitive);
+            e.primitive = p.surfaces ? static_cast<std::uint32_t>(s.primitive) : 0;
             WorkItem it{0, i, j, e.seg, false, false};
             it.surface = true;
             it.piece = q;
@@ -264,6 +266,8 @@ std::string explain_item(const ref::ModelScene& m, const WorkItem& item) {
   const auto ncurve = m.curve_segments.size();
   if (item.surface) {
     if (item.seg >= m.surfaces.size()) return s + "    (no such surface)\n";
+    if (!p.surfaces)
+      return s + "    (this build has no surface path: no piece, no hit, the overflow bit)\n";
     const ref::SurfaceDesc& sd = m.surfaces[item.seg];
     fixed::Overflow ovf;
     const ref::SurfaceSetupOut su =

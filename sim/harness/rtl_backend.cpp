@@ -107,6 +107,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
                               "memory and cannot report a write past the limit",
                               static_cast<unsigned long long>(fsize.rlim_cur)));
   }
+  ref::require_built_kinds(m);
   const FrameSchedule f = schedule_frame(sc, m, o.ref);
   RtlRender out;
   // The frame runs on the configuration built for speed; --trace-pixel on the traceable one

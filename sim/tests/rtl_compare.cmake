@@ -16,7 +16,7 @@ foreach(scene curve12 ellipse6 polyline9 airfield)
            "-DARGS=compare;builtin:${scene};--size;72x40;--out;${RPU_CMP_OUT}/${scene}_72x40"
            -DEXPECT_RC=0 "-DEXPECT_ERR=PASS: report" -P ${RPU_RUN})
   list(APPEND rtl_tests rtl_compare_${scene}_64 rtl_compare_${scene}_72x40)
-  set(cfgs "iterative|--ip|iterative" "n8_n1_1|--n|8|--n1|1")
+  set(cfgs "iterative|--ip|iterative" "n8_n1_1|--n|8|--n1|1|--surfaces|off")
   if(RPU_SIM_EXTRA)  # the (12, 3) iterative configuration is opt-in (sim/harness/CMakeLists.txt)
     list(APPEND cfgs "n12_n1_3_iterative|--n|12|--n1|3|--ip|iterative")
   endif()
@@ -126,6 +126,12 @@ add_test(NAME rtl_trace_pixel_fsize_limit COMMAND ${CMAKE_COMMAND} -DRPU=sh
          -P ${RPU_RUN})
 list(APPEND rtl_tests rtl_fault_is_caught rtl_trace_pixel rtl_trace_pixel_surface
      rtl_trace_pixel_fsize_limit)
+
+# A build without the surface path refuses a scene with surfaces before any cycle runs.
+add_test(NAME rtl_bad_no_surfaces COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=render;builtin:surf_mix;--size;16x16;--backend;rtl;--n;8;--n1;1;--surfaces;off;-o;${RPU_CMP_OUT}/bad.png"
+         -DEXPECT_RC=1 "-DEXPECT_ERR=no surface path \\(--surfaces off\\)" -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_bad_no_surfaces)
 
 # Bad input to the co-simulation: one line, exit 1 ('~' separates arguments here).
 foreach(bad "no_config|--size~16x16~--n~10~--n1~2|no Verilated rpu_top for n 10"

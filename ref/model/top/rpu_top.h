@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "model/curve/rpu_sphere.h"
+#include "model/surface/rpu_surface_top.h"
 #include "model/datapath.h"
 #include "model/top/rpu_ray_gen.h"
 
@@ -25,6 +26,15 @@ PairResult process_curve_pair(const HwParams& p, const CameraDesc& cam, const Ra
 inline PairResult process_curve_pair(const HwParams& p, const CameraDesc& cam,
                                      const SegmentDesc& s, int i, int j) {
   return process_curve_pair(p, cam, ray_generator(p, cam, i, j), s);
+}
+
+// rpu_top built without the surface path (`surfaces` off, Surfaces = 0): its answer to a
+// surface item, one cycle after the descriptor stage — no piece, no hit, the overflow bit, and
+// primitive 0 (the renderers refuse such scenes up front: require_built_kinds).
+inline SurfacePieceResult unbuilt_surface_result() {
+  SurfacePieceResult r;
+  r.overflow = true;
+  return r;
 }
 
 }  // namespace rpu::ref

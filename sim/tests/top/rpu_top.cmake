@@ -25,7 +25,11 @@ add_test(NAME tb_rpu_top_iter_throughput COMMAND tb_rpu_top throughput --config 
 add_test(NAME tb_rpu_top_surf_mix COMMAND tb_rpu_top frame --scene surf_mix --size 16)
 add_test(NAME tb_rpu_top_surf_backpressure COMMAND tb_rpu_top backpressure --scene surf_mix
          --size 12 --config n16_n1_2_iterative)
+# A build without the surface path (Surfaces = 0) answers surf_mix's surface pieces with no
+# piece, no hit and the overflow bit, in order between the curve and texture results.
+add_test(NAME tb_rpu_top_no_surfaces COMMAND tb_rpu_top frame --scene surf_mix --size 16
+         --config n8_n1_1_no_surfaces)
 set_tests_properties(tb_rpu_top tb_rpu_top_airfield tb_rpu_top_throughput tb_rpu_top_backpressure
                      tb_rpu_top_xseeds tb_rpu_top_iter tb_rpu_top_iter_throughput tb_rpu_top_mixed
-                     tb_rpu_top_surf_mix tb_rpu_top_surf_backpressure
+                     tb_rpu_top_surf_mix tb_rpu_top_surf_backpressure tb_rpu_top_no_surfaces
                      PROPERTIES LABELS rtl)
