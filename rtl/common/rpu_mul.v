@@ -11,6 +11,11 @@
 // One operand pair per cycle, no stall; `tag_i` comes out unchanged with the product (tag_o holds
 // the last valid item's tag while valid_o is low).
 `default_nettype none
+// The default LutTile of every rpu_mul (docs/resources.md, "Narrow tiles"): a DSP48E1 per tile
+// only where the tile is wider than this on both sides. A build may set it (+define+).
+`ifndef RPU_MUL_LUT_TILE
+`define RPU_MUL_LUT_TILE 3
+`endif
 
 module rpu_mul #(
   parameter integer AW     = 25,  // width of a (2..126)
@@ -21,6 +26,9 @@ module rpu_mul #(
   parameter integer TagW   = 1,   // side-band bits (>= 1)
   parameter integer Latency = 0,  // 0: the natural latency; more: extra output registers
                                   // (to line up with a parallel path); never less
+  parameter integer LutTile = `RPU_MUL_LUT_TILE,  // a tile with a chunk of at most this many
+                                  // unsigned bits is a shift-and-add in LUTs, not a DSP48E1,
+                                  // when the product has more than one tile (0: never)
   // Derived (do not override).
   parameter integer PW     = AW + BW
 ) (
@@ -54,6 +62,7 @@ module rpu_mul #(
       $fatal(1, "rpu_mul: ChunkA must be in 2..24 and ChunkB in 2..17");
     if (T > 64) $fatal(1, "rpu_mul: more than 64 tiles");
     if (Latency != 0 && Latency < Natural) $fatal(1, "rpu_mul: Latency below the natural one");
+    if (LutTile < 0 || LutTile > 8) $fatal(1, "rpu_mul: LutTile must be in 0..8");
   end
 
   // Extra latency (Latency above the natural one) delays the operands before the tiles, so the
@@ -75,6 +84,35 @@ module rpu_mul #(
       assign {a_d, b_d} = d_q[Extra*(AW+BW)-1 -: AW+BW];
     end
   endgenerate
+
+  // A narrow tile's product as a sum of shifted copies of the wide operand x, radix-4 Booth
+  // recoded: y is the narrow operand, sign-extended from bit n (its chunk's n unsigned bits, then
+  // the sign: 0 for all but a signed operand's top chunk). Digit j is
+  // d_j = −2·y_(2j+1) + y_(2j) + y_(2j−1) ∈ {−2, …, 2} (y_(−1) = 0), and y = Σ d_j·4^j over
+  // j ≤ n/2, so at most three terms for n ≤ 4: two adder levels within the cycle (n ≤ 3 at the
+  // default: two terms, one adder).
+  function automatic signed [TA+TB-1:0] rpu_mul_narrow(input signed [TA+TB-1:0] x,
+                                                       input [TA+TB-1:0] y, input integer n);
+    integer j;
+    reg [2:0] d;
+    reg signed [TA+TB-1:0] acc, term;
+    begin
+      acc = {(TA+TB){1'b0}};
+      for (j = 0; j <= 4; j = j + 1)
+        if (j <= n / 2) begin
+          d = {y[2*j+1], y[2*j], j == 0 ? 1'b0 : y[2*j-1]};
+          case (d)
+            3'b001, 3'b010: term = x;
+            3'b011:         term = x <<< 1;
+            3'b100:         term = -(x <<< 1);
+            3'b101, 3'b110: term = -x;
+            default:        term = {(TA+TB){1'b0}};
+          endcase
+          acc = acc + (term <<< (2 * j));
+        end
+      rpu_mul_narrow = acc;
+    end
+  endfunction
 
   // Operands extended to whole chunks (sign or zero), so every chunk slice is in range.
   localparam integer AX = NA * ChunkA + 1;
@@ -98,7 +136,20 @@ module rpu_mul #(
         always @(posedge clk_i) begin
           ta_q <= {top_a ? a_x[ia*ChunkA + ChunkA] : 1'b0, a_x[ia*ChunkA +: ChunkA]};
           tb_q <= {top_b ? b_x[ib*ChunkB + ChunkB] : 1'b0, b_x[ib*ChunkB +: ChunkB]};
-          tp_q <= ta_q * tb_q;
+        end
+        // The chunks' unsigned bits: whole chunks, except the top one (what remains of AW').
+        localparam integer WA = ia == NA - 1 ? AW - Signed - ChunkA * (NA - 1) : ChunkA;
+        localparam integer WB = ib == NB - 1 ? BW - Signed - ChunkB * (NB - 1) : ChunkB;
+        if (T > 1 && WB <= LutTile && WB <= WA) begin : g_lut_b
+          // b's chunk is narrow: the sum of a's chunk shifted by each bit of it, the sign bit
+          // (of a top chunk of a signed b) with weight −2^WB.
+          always @(posedge clk_i)
+            tp_q <= rpu_mul_narrow({{TB{ta_q[TA-1]}}, ta_q}, {{TA{tb_q[TB-1]}}, tb_q}, WB);
+        end else if (T > 1 && WA <= LutTile) begin : g_lut_a
+          always @(posedge clk_i)
+            tp_q <= rpu_mul_narrow({{TA{tb_q[TB-1]}}, tb_q}, {{TB{ta_q[TA-1]}}, ta_q}, WA);
+        end else begin : g_dsp
+          always @(posedge clk_i) tp_q <= ta_q * tb_q;
         end
         // The tile's weight 2^(ChunkA·ia + ChunkB·ib), the product sign-extended to PW bits
         // (bits at or above PW are dropped: the sums are modulo 2^PW).

@@ -1,9 +1,17 @@
 # rpu_mul: exhaustive at 7 × 6 bits with 3 × 2-bit chunks (9 tiles, a four-level tree), signed
-# and unsigned; corners and 200,000 random products at 51 × 23 unsigned (6 tiles: L²·w of the
-# guide pair) and, opt-in, 28 × 28 signed padded to a latency of 6 and one tile (25 × 18 signed).
+# and unsigned, every tile a Booth shift-and-add (LutTile 3) and, signed, every tile a product
+# (LutTile 0); corners and 200,000 random products at 51 × 23 unsigned (6 tiles: L²·w of the
+# guide pair; the two tiles of a's 3-bit top chunk in LUTs) and 22 × 22 signed (the candidate's
+# squares: one DSP tile and a Booth tile with the sign); opt-in, 28 × 28 signed padded to a
+# latency of 6 and one tile (25 × 18 signed).
 rpu_verilated_test(tb_rpu_mul_7x6s TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
                    PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2
                    DEFS A_W=7 B_W=6 SIGNED=1 CHUNK_A=3 CHUNK_B=2)
+rpu_verilated_test(tb_rpu_mul_7x6s_dsp TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
+                   PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2 -GLutTile=0
+                   DEFS A_W=7 B_W=6 SIGNED=1 CHUNK_A=3 CHUNK_B=2)
+rpu_verilated_test(tb_rpu_mul_22x22s TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
+                   PARAMS -GAW=22 -GBW=22 -GSigned=1 DEFS A_W=22 B_W=22 SIGNED=1)
 rpu_verilated_test(tb_rpu_mul_7x6u TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
                    PARAMS -GAW=7 -GBW=6 -GSigned=0 -GChunkA=3 -GChunkB=2
                    DEFS A_W=7 B_W=6 SIGNED=0 CHUNK_A=3 CHUNK_B=2)
