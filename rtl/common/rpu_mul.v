@@ -14,7 +14,7 @@
 // The default LutTile of every rpu_mul (docs/resources.md, "Narrow tiles"): a DSP48E1 per tile
 // only where the tile is wider than this on both sides. A build may set it (+define+).
 `ifndef RPU_MUL_LUT_TILE
-`define RPU_MUL_LUT_TILE 3
+`define RPU_MUL_LUT_TILE 4
 `endif
 
 module rpu_mul #(
@@ -89,28 +89,53 @@ module rpu_mul #(
   // recoded: y is the narrow operand, sign-extended from bit n (its chunk's n unsigned bits, then
   // the sign: 0 for all but a signed operand's top chunk). Digit j is
   // d_j = −2·y_(2j+1) + y_(2j) + y_(2j−1) ∈ {−2, …, 2} (y_(−1) = 0), and y = Σ d_j·4^j over
-  // j ≤ n/2, so at most three terms for n ≤ 4: two adder levels within the cycle (n ≤ 3 at the
-  // default: two terms, one adder).
-  function automatic signed [TA+TB-1:0] rpu_mul_narrow(input signed [TA+TB-1:0] x,
-                                                       input [TA+TB-1:0] y, input integer n);
+  // j ≤ n/2, so at most three terms for n ≤ 4: two adder levels within the cycle. The sum is
+  // taken in the wide operand's width plus LutTile + 3 bits (the narrow operand's bits and sign,
+  // two bits of headroom for the partial sums), then sign-extended: short carry chains. One
+  // function per wide side (a's chunk: TA bits, b's: TB), as a function's widths are fixed.
+  localparam integer NAx = TA + LutTile + 3, NBx = TB + LutTile + 3;
+  localparam integer NWA = NAx < TA + TB ? NAx : TA + TB;  // sum width, a's chunk wide
+  localparam integer NWB = NBx < TA + TB ? NBx : TA + TB;  // sum width, b's chunk wide
+  function automatic signed [TA+TB-1:0] rpu_mul_narrow_wa(input signed [NWA-1:0] x,
+                                                          input [TA+TB-1:0] y, input integer n);
     integer j;
-    reg [2:0] d;
-    reg signed [TA+TB-1:0] acc, term;
+    reg signed [NWA-1:0] acc, term;
     begin
-      acc = {(TA+TB){1'b0}};
+      acc = {NWA{1'b0}};
       for (j = 0; j <= 4; j = j + 1)
         if (j <= n / 2) begin
-          d = {y[2*j+1], y[2*j], j == 0 ? 1'b0 : y[2*j-1]};
-          case (d)
+          case ({y[2*j+1], y[2*j], j == 0 ? 1'b0 : y[2*j-1]})
             3'b001, 3'b010: term = x;
             3'b011:         term = x <<< 1;
             3'b100:         term = -(x <<< 1);
             3'b101, 3'b110: term = -x;
-            default:        term = {(TA+TB){1'b0}};
+            default:        term = {NWA{1'b0}};
           endcase
           acc = acc + (term <<< (2 * j));
         end
-      rpu_mul_narrow = acc;
+      rpu_mul_narrow_wa = {(TA+TB){acc[NWA-1]}};  // sign-extended
+      rpu_mul_narrow_wa[NWA-1:0] = acc;
+    end
+  endfunction
+  function automatic signed [TA+TB-1:0] rpu_mul_narrow_wb(input signed [NWB-1:0] x,
+                                                          input [TA+TB-1:0] y, input integer n);
+    integer j;
+    reg signed [NWB-1:0] acc, term;
+    begin
+      acc = {NWB{1'b0}};
+      for (j = 0; j <= 4; j = j + 1)
+        if (j <= n / 2) begin
+          case ({y[2*j+1], y[2*j], j == 0 ? 1'b0 : y[2*j-1]})
+            3'b001, 3'b010: term = x;
+            3'b011:         term = x <<< 1;
+            3'b100:         term = -(x <<< 1);
+            3'b101, 3'b110: term = -x;
+            default:        term = {NWB{1'b0}};
+          endcase
+          acc = acc + (term <<< (2 * j));
+        end
+      rpu_mul_narrow_wb = {(TA+TB){acc[NWB-1]}};  // sign-extended
+      rpu_mul_narrow_wb[NWB-1:0] = acc;
     end
   endfunction
 
@@ -144,10 +169,10 @@ module rpu_mul #(
           // b's chunk is narrow: the sum of a's chunk shifted by each bit of it, the sign bit
           // (of a top chunk of a signed b) with weight −2^WB.
           always @(posedge clk_i)
-            tp_q <= rpu_mul_narrow({{TB{ta_q[TA-1]}}, ta_q}, {{TA{tb_q[TB-1]}}, tb_q}, WB);
+            tp_q <= rpu_mul_narrow_wa({{(NWA-TA){ta_q[TA-1]}}, ta_q}, {{TA{tb_q[TB-1]}}, tb_q}, WB);
         end else if (T > 1 && WA <= LutTile) begin : g_lut_a
           always @(posedge clk_i)
-            tp_q <= rpu_mul_narrow({{TA{tb_q[TB-1]}}, tb_q}, {{TB{ta_q[TA-1]}}, ta_q}, WA);
+            tp_q <= rpu_mul_narrow_wb({{(NWB-TB){tb_q[TB-1]}}, tb_q}, {{TB{ta_q[TA-1]}}, ta_q}, WA);
         end else begin : g_dsp
           always @(posedge clk_i) tp_q <= ta_q * tb_q;
         end

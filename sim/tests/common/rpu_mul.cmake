@@ -1,5 +1,5 @@
 # rpu_mul: exhaustive at 7 × 6 bits with 3 × 2-bit chunks (9 tiles, a four-level tree), signed
-# and unsigned, every tile a Booth shift-and-add (LutTile 3) and, signed, every tile a product
+# and unsigned, every tile a Booth shift-and-add (LutTile 4) and, signed, every tile a product
 # (LutTile 0); corners and 200,000 random products at 51 × 23 unsigned (6 tiles: L²·w of the
 # guide pair; the two tiles of a's 3-bit top chunk in LUTs) and 22 × 22 signed (the candidate's
 # squares: one DSP tile and a Booth tile with the sign); opt-in, 28 × 28 signed padded to a
