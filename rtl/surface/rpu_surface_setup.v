@@ -37,6 +37,9 @@
 // Outputs: s_lo_o, s_hi_o Q(1.SF) unsigned SF + 1 bits; a_o LSB; ab_o B' − A' (CW + 1 bits);
 // la_o lA' (LW bits); lab_o lB' − lA' (LW + 1 bits). KF = LW, SF = MantW = LW + 2.
 //
+// Sphere = 0 (rpu_top, which shares its curve path's sphere unit: a surface item takes that
+// unit's slot, as every work item is of one kind): the sphere's results come with the item, the
+// stage Ls and the descriptor FIFO below are not built, and the latency is Latency − Ls.
 // The descriptor waits in a FIFO (rpu_fifo, 2^FifoLog2 ≥ Ls entries: 64, which Yosys puts in
 // LUT RAM; first-word fall-through, so the head is at its output when the sphere unit delivers
 // that item) instead of riding the sphere unit's 57 stages in shift registers; from there the
@@ -78,6 +81,10 @@ module rpu_surface_setup #(
   parameter integer SurfW   = 24,  // LW: signed width of surface-local coordinates, llsb (16..36)
   parameter integer AngleW  = 20,  // AW: bits of a binary angle (12..32)
   parameter integer TagW    = 1,   // side-band bits carried with each item (>= 1)
+  parameter integer Sphere  = 1,   // 1: the unit's own sphere unit; 0: the caller's (rpu_top's
+                                   // curve-path rpu_sphere at these parameters, d = 0): its
+                                   // results come with the item on sp_*_i, and eye_i, vhat_i,
+                                   // c0_i, r2_i are unused
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,     // v̂: Q(2.FV)
   parameter integer DiffW  = `RPU_DW(CoordW),      // B − A, X − origin
@@ -98,6 +105,11 @@ module rpu_surface_setup #(
 `include "rpu_surface_setup_ports.vh"
   input  wire [1:0]           piece_i,       // 0..2
   input  wire [TagW-1:0]      tag_i,
+  input  wire                 sp_pred1_i,    // Sphere = 0: the sphere unit's pred1, A, B and
+  input  wire [3*CoordW-1:0]  sp_a_i,        //   overflow for this item (rpu_sphere's outputs
+  input  wire [3*CoordW-1:0]  sp_b_i,        //   with p1 = d = 0, inv_m = inv_s = 0), and its
+  input  wire [3*DiffW-1:0]   sp_ab_i,       //   B − A
+  input  wire                 sp_ovf_i,
   output wire                 valid_o,
   output wire                 pred1_o,       // the bounding sphere is met in front of the eye
   output wire                 piece_valid_o, // ... and piece_i exists (the twin's `valid`)
@@ -139,7 +151,7 @@ module rpu_surface_setup #(
   localparam integer SpL3  = `RPU_MUL_LAT(DirW, CW + 5, 1);
   localparam integer SpL4  = `RPU_MUL_LAT(DiffW, DiffW, 1);
   localparam integer SpLCh = `RPU_MUL_LAT(InvW + 1, 2 * DiffW + 2, 1) + 3;
-  localparam integer Ls    = SpStages + 9 + SpL1 + SpL2 + SpL3 + SpL4 + SpLCh;
+  localparam integer Ls    = Sphere == 0 ? 0 : SpStages + 9 + SpL1 + SpL2 + SpL3 + SpL4 + SpLCh;
   localparam integer L1 = `RPU_MUL_LAT(DiffW, MW, 1);
   localparam integer L2 = `RPU_MUL_LAT(LW, ConstW, 1);
   localparam integer L3W = `RPU_MUL_LAT(DiffW, SW + 1, 1);
@@ -156,6 +168,7 @@ module rpu_surface_setup #(
     if (SurfW < 16 || SurfW > 36) $fatal(1, "rpu_surface_setup: SurfW must be in 16..36");
     if (AngleW < 12 || AngleW > 32) $fatal(1, "rpu_surface_setup: AngleW must be in 12..32");
     if (TagW < 1) $fatal(1, "rpu_surface_setup: TagW must be >= 1");
+    if (Sphere != 0 && Sphere != 1) $fatal(1, "rpu_surface_setup: Sphere must be 0 or 1");
     if (DirW != `RPU_VHATW(DirFrac) || DiffW != `RPU_DW(CoordW) || R2W != `RPU_R2W(CoordW) ||
         MantW != SurfW + 2 || ConstW != SurfW + 2 || SW != SurfW + 3 || LDiffW != SurfW + 1)
       $fatal(1, "rpu_surface_setup: derived parameters must not be overridden");
@@ -165,28 +178,8 @@ module rpu_surface_setup #(
 
   // =============================================================================================
   // The sphere unit (d = 0: p1, d, inv_m, inv_s tied to zero, so α = β = 0 and never flagged)
-  // and the descriptor FIFO.
+  // and the descriptor FIFO; with Sphere = 0 the caller's sphere unit, and neither.
   // =============================================================================================
-  wire               sp_valid;
-  wire               sp_pred1;
-  wire [CW+3:0]      sp_tc;
-  wire [CW+2:0]      sp_hc;
-  wire [3*CW-1:0]    sp_a;
-  wire [3*CW-1:0]    sp_b;
-  wire [3*DiffW-1:0] sp_ab;
-  wire [TFrac+2:0]   sp_alpha;
-  wire [TFrac+2:0]   sp_beta;
-  wire               sp_ovf;
-  wire               sp_tag;
-  rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
-               .TagW(1)) u_sphere (
-    .clk_i, .rst_ni, .valid_i, .eye_i, .vhat_i, .c0_i, .r2_i, .p1_i({3*CW{1'b0}}),
-    .d_i({3*DiffW{1'b0}}), .inv_m_i({InvW{1'b0}}), .inv_s_i(7'd0), .tag_i(1'b0),
-    .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc), .half_chord_o(sp_hc), .a_o(sp_a),
-    .b_o(sp_b), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta), .ovf_o(sp_ovf),
-    .tag_o(sp_tag));
-  wire unused_sp = ^{sp_tc, sp_hc, sp_alpha, sp_beta, sp_tag};
-
   // The descriptor word, field by field.
   localparam integer OffOrigin = 0;
   localparam integer OffM      = OffOrigin + 3 * CW;
@@ -204,36 +197,72 @@ module rpu_surface_setup #(
   wire [DescW-1:0] desc_in = {tag_i, piece_i, type_i, end_angle_i, end_cos_i, end_sin_i, y_max_i,
                               y_min_i, to_local_s_i, to_local_i, origin_i};
 
-  wire             desc_wr_ready;
-  wire             desc_valid;
-  wire [DescW-1:0] desc;
-  rpu_fifo #(.Width(DescW), .Log2Depth(FifoLog2)) u_desc (
-    .clk_i, .rst_ni, .wr_valid_i(valid_i), .wr_ready_o(desc_wr_ready), .wr_data_i(desc_in),
-    .rd_valid_o(desc_valid), .rd_ready_i(sp_valid), .rd_data_o(desc));
+  wire               sp_valid;
+  wire               sp_pred1;
+  wire [3*CW-1:0]    sp_a;
+  wire [3*CW-1:0]    sp_b;
+  wire [3*DiffW-1:0] sp_ab;
+  wire               sp_ovf;
+  wire [DescW-1:0]   desc;
+  generate
+    if (Sphere != 0) begin : g_sphere
+      wire [CW+3:0]      sp_tc;
+      wire [CW+2:0]      sp_hc;
+      wire [TFrac+2:0]   sp_alpha;
+      wire [TFrac+2:0]   sp_beta;
+      wire               sp_tag;
+      rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
+                   .TagW(1)) u_sphere (
+        .clk_i, .rst_ni, .valid_i, .eye_i, .vhat_i, .c0_i, .r2_i, .p1_i({3*CW{1'b0}}),
+        .d_i({3*DiffW{1'b0}}), .inv_m_i({InvW{1'b0}}), .inv_s_i(7'd0), .tag_i(1'b0),
+        .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc), .half_chord_o(sp_hc), .a_o(sp_a),
+        .b_o(sp_b), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta), .ovf_o(sp_ovf),
+        .tag_o(sp_tag));
+      wire unused_sp = ^{sp_tc, sp_hc, sp_alpha, sp_beta, sp_tag, sp_pred1_i, sp_a_i, sp_b_i,
+                         sp_ab_i, sp_ovf_i};
+
+      wire             desc_wr_ready;
+      wire             desc_valid;
+      rpu_fifo #(.Width(DescW), .Log2Depth(FifoLog2)) u_desc (
+        .clk_i, .rst_ni, .wr_valid_i(valid_i), .wr_ready_o(desc_wr_ready), .wr_data_i(desc_in),
+        .rd_valid_o(desc_valid), .rd_ready_i(sp_valid), .rd_data_o(desc));
 `ifdef FORMAL
-  // The same promise, asserted (Yosys's formal front end has no $fatal in an always block).
-  always @(*) if (rst_ni) begin
-    if (valid_i) assert(desc_wr_ready);
-    if (sp_valid) assert(desc_valid);
-  end
+      // The same promise, asserted (Yosys's formal front end has no $fatal in an always block).
+      always @(*) if (rst_ni) begin
+        if (valid_i) assert(desc_wr_ready);
+        if (sp_valid) assert(desc_valid);
+      end
 `elsif SYNTHESIS
-  wire unused_fifo = ^{desc_wr_ready, desc_valid};
+      wire unused_fifo = ^{desc_wr_ready, desc_valid};
 `else
-  // The FIFO never fills (it holds at most Ls items) and always has the item the sphere unit
-  // delivers. Checked only out of reset: at an edge inside the reset the registers still hold
-  // their power-up values (live_q included), which an X-seeded simulation makes random.
-  reg live_q;  // out of reset
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) live_q <= 1'b0;
-    else begin
-      live_q <= 1'b1;
-      if (live_q && valid_i && !desc_wr_ready)
-        $fatal(1, "rpu_surface_setup: descriptor FIFO full");
-      if (live_q && sp_valid && !desc_valid)
-        $fatal(1, "rpu_surface_setup: descriptor FIFO empty at the sphere unit's output");
-    end
-  end
+      // The FIFO never fills (it holds at most Ls items) and always has the item the sphere unit
+      // delivers. Checked only out of reset: at an edge inside the reset the registers still hold
+      // their power-up values (live_q included), which an X-seeded simulation makes random.
+      reg live_q;  // out of reset
+      always @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) live_q <= 1'b0;
+        else begin
+          live_q <= 1'b1;
+          if (live_q && valid_i && !desc_wr_ready)
+            $fatal(1, "rpu_surface_setup: descriptor FIFO full");
+          if (live_q && sp_valid && !desc_valid)
+            $fatal(1, "rpu_surface_setup: descriptor FIFO empty at the sphere unit's output");
+        end
+      end
 `endif
+
+    end else begin : g_ext_sphere
+      // The caller's sphere unit: its results and the descriptor arrive together.
+      assign sp_valid = valid_i;
+      assign sp_pred1 = sp_pred1_i;
+      assign sp_a     = sp_a_i;
+      assign sp_b     = sp_b_i;
+      assign sp_ab    = sp_ab_i;
+      assign sp_ovf   = sp_ovf_i;
+      assign desc     = desc_in;
+      wire unused_ext = ^{eye_i, vhat_i, c0_i, r2_i};
+    end
+  endgenerate
 
   // =============================================================================================
   // Stage 1: q = X − origin for X = A, B (exact, DiffW bits); the type decoded.

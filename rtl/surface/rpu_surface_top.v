@@ -54,6 +54,8 @@ module rpu_surface_top #(
                                     // an rpu_surface_admit of this Period and Returns at any
                                     // fixed distance ahead (rpu_top), ready_o is 1
   parameter integer TagW     = 1,   // side-band bits carried with each item (>= 1)
+  parameter integer Sphere   = 1,   // 1: the setup's own sphere unit; 0: the caller's, whose
+                                    // results come with the item on sp_*_i (rpu_surface_setup)
   // Derived (do not override).
   parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
   parameter integer DiffW  = `RPU_DW(CoordW),               // B' − A', X − h
@@ -78,6 +80,11 @@ module rpu_surface_top #(
   input  wire [DescW-1:0]    desc_i,         // SurfaceDesc: the indicator's fields, one word
   input  wire [1:0]          piece_i,        // 0..2
   input  wire [TagW-1:0]     tag_i,
+  input  wire                sp_pred1_i,     // Sphere = 0: the caller's sphere unit's pred1, A,
+  input  wire [3*CoordW-1:0] sp_a_i,         //   B, B − A and overflow for this item (p1 = d = 0);
+  input  wire [3*CoordW-1:0] sp_b_i,         //   with Sphere = 0, eye_i is still the camera's
+  input  wire [3*DiffW-1:0]  sp_ab_i,        //   (the depth) but vhat_i, bound_c0_i and
+  input  wire                sp_ovf_i,       //   bound_r2_i are unused
   output wire                valid_o,
   output wire                piece_valid_o,
   output wire                hit_o,
@@ -118,6 +125,7 @@ module rpu_surface_top #(
     if (CoordW < 12 || CoordW > 40) $fatal(1, "rpu_surface_top: CoordW must be in 12..40");
     if (EdgeFrac < 8 || EdgeFrac > 40) $fatal(1, "rpu_surface_top: EdgeFrac must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_surface_top: TagW must be >= 1");
+    if (Sphere != 0 && Sphere != 1) $fatal(1, "rpu_surface_top: Sphere must be 0 or 1");
     if (DirW != `RPU_VHATW(DirFrac) || DiffW != `RPU_DW(CoordW) || BR2W != `RPU_R2W(CoordW) ||
         MantW != SurfW + 2 || ConstW != SurfW + 2 || DescW != SdW || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
       $fatal(1, "rpu_surface_top: derived parameters must not be overridden");
@@ -153,11 +161,12 @@ module rpu_surface_top #(
   wire [3*LabW-1:0]   su_lab;
   wire [TagW-1:0]     su_tag;
   rpu_surface_setup #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
-                      .SqrtW(SqrtW), .SurfW(SurfW), .AngleW(AngleW), .TagW(TagW)) u_setup (
+                      .SqrtW(SqrtW), .SurfW(SurfW), .AngleW(AngleW), .TagW(TagW),
+                      .Sphere(Sphere)) u_setup (
     .clk_i, .rst_ni, .valid_i(accept), .eye_i, .vhat_i, .c0_i(bound_c0_i), .r2_i(bound_r2_i),
     .origin_i, .to_local_i, .to_local_s_i, .type_i(desc_i[SdTypeO +: 3]), .y_min_i, .y_max_i,
-    .end_angle_i, .end_cos_i, .end_sin_i, .piece_i, .tag_i,
-    .valid_o(su_valid), .pred1_o(su_pred1_unused), .piece_valid_o(su_piece_valid),
+    .end_angle_i, .end_cos_i, .end_sin_i, .piece_i, .tag_i, .sp_pred1_i, .sp_a_i, .sp_b_i,
+    .sp_ab_i, .sp_ovf_i, .valid_o(su_valid), .pred1_o(su_pred1_unused), .piece_valid_o(su_piece_valid),
     .pieces_o(su_pieces), .s_lo_o(su_slo_unused), .s_hi_o(su_shi_unused), .a_o(su_a),
     .ab_o(su_ab), .la_o(su_la), .lab_o(su_lab), .x_negative_o(su_xneg), .last_turn_o(su_last),
     .ovf_o(su_ovf), .tag_o(su_tag));

@@ -304,23 +304,44 @@ module rpu_top #(
   wire [SegFgW-1:0]   sd_fg   = sd[SegFgO +: SegFgW];      // {fg1, fg2}
 
 `ifndef RPU_FORMAL_TOP
-  // ---- sphere unit ----
+  // ---- sphere unit: a curve item's interpolation sphere, or a surface piece's bounding sphere
+  // (with p1 = d = 0 and no 1/L², as rpu_surface_setup's own unit would take it: the surface path
+  // shares this unit, each work item being of one kind) ----
+  // The bounding spheres {R², c0}, a copy of those fields of the surface RAM read beside the ray
+  // generator's output (distributed RAM, read without a register).
+  localparam integer SbW = SfR2W + 3 * CoordW;
+  wire            sp_surf = Surfaces != 0 && rg_surf;
+  wire [SbW-1:0]  rg_sb;
+  generate
+    if (Surfaces != 0) begin : g_bound_ram
+      reg [SbW-1:0] sb_mem [0:(1<<SurfAddrW)-1];
+      always @(posedge clk_i) if (surf_we_i) sb_mem[surf_addr_i] <= surf_data_i[SfR2O +: SbW];
+      assign rg_sb = sb_mem[rg_it[ItSegO +: SurfAddrW]];
+    end else begin : g_no_bound_ram
+      assign rg_sb = {SbW{1'b0}};
+    end
+  endgenerate
   wire             sp_valid, sp_pred1, sp_ovf;
   wire [CoordW+3:0] sp_tc_unused;
   wire [CoordW+2:0] sp_hc_unused;
-  wire [3*CoordW-1:0] sp_a, sp_b_unused;
+  wire [3*CoordW-1:0] sp_a, sp_b;
   wire [SegDW-1:0] sp_ab;
   wire [TW-1:0]    sp_alpha, sp_beta;
   wire [SphTagW-1:0] sp_tag;
   rpu_sphere #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW), .SqrtW(SqrtW),
                .TagW(SphTagW)) u_sphere (
-    .clk_i, .rst_ni, .valid_i(rg_valid && !rg_surf && !sd_tex), .eye_i(cam_eye), .vhat_i(rg_vhat),
-    .c0_i(sd_c0),
-    .r2_i(sd_r2), .p1_i(sd_p1), .d_i(sd_d), .inv_m_i(sd_invm), .inv_s_i(sd_invs),
-    .tag_i({rg_itb, sd_prim, sd_p1, sd_d, sd_l2, sd_g, sd_fr, sd_fg, rg_edges}),
+    .clk_i, .rst_ni, .valid_i(rg_valid && !sd_tex && (!rg_surf || sp_surf)), .eye_i(cam_eye),
+    .vhat_i(rg_vhat),
+    .c0_i(sp_surf ? rg_sb[SfR2W +: 3*CoordW] : sd_c0),
+    .r2_i(sp_surf ? rg_sb[0 +: SfR2W] : sd_r2), .p1_i(sp_surf ? {SegP1W{1'b0}} : sd_p1),
+    .d_i(sp_surf ? {SegDW{1'b0}} : sd_d), .inv_m_i(sp_surf ? {SegInvMW{1'b0}} : sd_invm),
+    .inv_s_i(sp_surf ? {SegInvSW{1'b0}} : sd_invs),
+    .tag_i({rg_it, sd_prim, sd_p1, sd_d, sd_l2, sd_g, sd_fr, sd_fg, rg_edges}),
     .valid_o(sp_valid), .pred1_o(sp_pred1), .tc_o(sp_tc_unused), .half_chord_o(sp_hc_unused),
-    .a_o(sp_a), .b_o(sp_b_unused), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
+    .a_o(sp_a), .b_o(sp_b), .ab_o(sp_ab), .alpha_o(sp_alpha), .beta_o(sp_beta),
     .ovf_o(sp_ovf), .tag_o(sp_tag));
+  wire [ItW-1:0] sp_it     = sp_tag[SpItO +: ItW];
+  wire           sp_is_sf  = sp_it[ItSurfO];
 
   // ---- the K-step process ----
   wire             ip_ready_unused, ip_valid, ip_ovf;
@@ -328,7 +349,8 @@ module rpu_top #(
   wire [IpCtxW-1:0] ip_ctx;
   rpu_ip #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N), .N1(N1),
            .Metric(Metric), .Unrolled(Unrolled), .FifoLog2(FifoLog2), .CtxW(IpCtxW)) u_ip (
-    .clk_i, .rst_ni, .valid_i(sp_valid), .ready_o(ip_ready_unused), .a_i(sp_a), .ab_i(sp_ab),
+    .clk_i, .rst_ni, .valid_i(sp_valid && !sp_is_sf), .ready_o(ip_ready_unused), .a_i(sp_a),
+    .ab_i(sp_ab),
     .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(sp_tag[SpP1O +: SegP1W]),
     .d_i(sp_tag[SpDO +: SegDW]), .l2_i(sp_tag[SpL2O +: SegL2W]),
     .g1_i(sp_tag[SpGO + GdW +: GdW]), .g2_i(sp_tag[SpGO +: GdW]),
@@ -338,7 +360,7 @@ module rpu_top #(
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
   // The credit count keeps rpu_ip's own start FIFO (same depth) from ever filling: ready is 1.
   wire unused_md = ^ip_state[IsMdO +: 2 * MdW];
-  wire unused_ip = ^{ip_ready_unused, sp_tc_unused, sp_hc_unused, sp_b_unused, rg_v_unused};
+  wire unused_ip = ^{ip_ready_unused, sp_tc_unused, sp_hc_unused, rg_v_unused};
 
   wire [ItBW-1:0]  i_it    = ip_ctx[IcItO +: ItBW];
   wire [PrimW-1:0] i_prim  = ip_ctx[IcPrimO +: PrimW];
@@ -436,19 +458,32 @@ module rpu_top #(
                           sd_l2, sd_invm, sd_invs, sd_g, sd_fr, sd_fg, rg_edges, cam_eye, cam_w};
 `endif
 
-  // ---- surface path: the descriptor read beside the ray, then rpu_surface_top ----
+  // ---- surface path: the sphere unit's result for the piece (above) and the descriptor read
+  // beside it, then rpu_surface_top; without the surface path (Surfaces = 0), and in the top's
+  // proof, the piece branches off at the ray generator instead ----
+  wire           sf_src_v;
+  wire [ItW-1:0] sf_src_it;
+`ifdef RPU_FORMAL_TOP
+  assign sf_src_v  = rg_valid && rg_surf;
+  assign sf_src_it = rg_it;
+`else
+  assign sf_src_v  = Surfaces != 0 ? sp_valid && sp_is_sf : rg_valid && rg_surf;
+  assign sf_src_it = Surfaces != 0 ? sp_it : rg_it;
+  // The sphere unit's result for the piece: {pred1, A, B, B − A, overflow}.
+  localparam integer SfSpW = 2 + 6 * CoordW + SegDW;
+  reg [SfSpW-1:0] sf_sp_q;
+  always @(posedge clk_i) sf_sp_q <= {sp_pred1, sp_a, sp_b, sp_ab, sp_ovf};
+`endif
   reg                sf_v_q;
   reg [ItW-1:0]      sf_it_q;
-  reg [3*(2+DirFrac)-1:0] sf_vhat_q;
   reg [SurfDW-1:0]   sf_q;
   always @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) sf_v_q <= 1'b0;
-    else         sf_v_q <= rg_valid && rg_surf;
+    else         sf_v_q <= sf_src_v;
   end
   always @(posedge clk_i) begin
-    sf_it_q   <= rg_it;
-    sf_vhat_q <= rg_vhat;
-    sf_q      <= surf_mem[rg_it[ItSegO +: SurfAddrW]];
+    sf_it_q   <= sf_src_it;
+    sf_q      <= surf_mem[sf_src_it[ItSegO +: SurfAddrW]];
   end
   wire             sf_valid, sf_ready_unused, sf_pv, sf_hit, sf_ovf;
   wire [1:0]       sf_pcs;
@@ -471,24 +506,27 @@ module rpu_top #(
   assign sf_valid = f_sf_v && f_sf_go;
   assign {sf_ready_unused, sf_pv, sf_hit, sf_ovf, sf_pcs, sf_tau, sf_x, sf_depth} =
       {(6 + N + 3*CoordW + DepthW){1'b0}};
-  wire unused_sf_abs = ^{sf_vhat_q, sf_q, f_sf_wr_unused};
+  wire unused_sf_abs = ^{sf_q, f_sf_wr_unused};
 `else
   generate
     if (Surfaces != 0) begin : g_surface
     rpu_surface_top #(.CoordW(CoordW), .DirFrac(DirFrac), .TFrac(TFrac), .InvW(InvW),
                       .SqrtW(SqrtW), .EdgeFrac(EdgeFrac), .SurfW(SurfW), .AngleW(AngleW),
                       .Turns(Turns), .N(N), .N1(N1), .N1First(N1First), .Indicators(Indicators),
-                      .Unrolled(0), .Admit(0), .TagW(ItW + PrimW)) u_surface (
+                      .Unrolled(0), .Admit(0), .TagW(ItW + PrimW), .Sphere(0)) u_surface (
       .clk_i, .rst_ni, .eye_i(cam_eye), .w_i(cam_w), .valid_i(sf_v_q), .ready_o(sf_ready_unused),
-      .vhat_i(sf_vhat_q), .bound_c0_i(sf_q[SfC0O +: 3*CoordW]), .bound_r2_i(sf_q[SfR2O +: SfR2W]),
+      .vhat_i({3*(2+DirFrac){1'b0}}), .bound_c0_i({3*CoordW{1'b0}}), .bound_r2_i({SfR2W{1'b0}}),
       .origin_i(sf_q[SfOriginO +: 3*CoordW]), .to_local_i(sf_q[SfToLocO +: 9*SfMantW]),
       .to_local_s_i(sf_q[SfToLocSO +: 7]), .y_min_i(sf_q[SfYMinO +: SurfW]),
       .y_max_i(sf_q[SfYMaxO +: SurfW]), .end_angle_i(sf_q[SfEndAngO +: AngleW]),
       .end_cos_i(sf_q[SfEndCosO +: SfConstW]), .end_sin_i(sf_q[SfEndSinO +: SfConstW]),
       .desc_i(sf_q[SfDescO +: SfDescW]), .piece_i(sf_it_q[ItPcO +: 2]),
       .tag_i({sf_it_q, sf_q[SfPrimO +: PrimW]}),
-      .valid_o(sf_valid), .piece_valid_o(sf_pv), .hit_o(sf_hit), .ovf_o(sf_ovf),
+      .sp_pred1_i(sf_sp_q[SfSpW-1]), .sp_a_i(sf_sp_q[1 + 3*CoordW + SegDW +: 3*CoordW]),
+      .sp_b_i(sf_sp_q[1 + SegDW +: 3*CoordW]), .sp_ab_i(sf_sp_q[1 +: SegDW]),
+      .sp_ovf_i(sf_sp_q[0]), .valid_o(sf_valid), .piece_valid_o(sf_pv), .hit_o(sf_hit), .ovf_o(sf_ovf),
       .pieces_o(sf_pcs), .tau_o(sf_tau), .x_o(sf_x), .depth_o(sf_depth), .tag_o(sf_tag));
+      wire unused_sf_bound = ^sf_q[SfR2O +: SbW];  // the sphere unit took them (sb_mem)
     end else begin : g_no_surface
       // Not built: a surface item's word comes back one cycle after its descriptor stage with
       // no piece, no hit and the overflow bit (the model's unbuilt_surface_result; the host
@@ -498,7 +536,7 @@ module rpu_top #(
       assign {sf_ready_unused, sf_pv, sf_hit, sf_pcs, sf_tau, sf_x, sf_depth} =
           {(5 + N + 3*CoordW + DepthW){1'b0}};
       assign sf_ovf   = 1'b1;
-      wire unused_sf_off = ^{sf_vhat_q, sf_q};
+      wire unused_sf_off = ^{sf_q, sf_sp_q};
     end
   endgenerate
 `endif

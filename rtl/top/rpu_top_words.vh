@@ -22,7 +22,8 @@
   localparam integer EdLeftO   = EdRightO + CamEW;
   localparam integer EdgW      = EdLeftO + CamEW;
 
-  // Beside the sphere unit: {item, prim, p1, d, L², g1, g2, edges}.
+  // Beside the sphere unit: {item, prim, p1, d, L², g1, g2, edges}; the whole item word, as a
+  // surface piece takes the unit's slot too (the surface path branches off after it).
   localparam integer SpEdgesO = 0;
   localparam integer SpFgO    = SpEdgesO + EdgW;           // the frame guides {fg1, fg2}
   localparam integer SpFrO    = SpFgO + SegFgW;            // the frame descriptor
@@ -32,7 +33,7 @@
   localparam integer SpP1O    = SpDO + SegDW;
   localparam integer SpPrimO  = SpP1O + SegP1W;
   localparam integer SpItO    = SpPrimO + PrimW;
-  localparam integer SphTagW  = SpItO + ItBW;
+  localparam integer SphTagW  = SpItO + ItW;
 
   // Beside the K-step process: {item, prim, pred_1, sphere overflow, edges}.
   localparam integer IcEdgesO = 0;
