@@ -60,27 +60,36 @@ def read_forms(resources):
         row = dict(zip(header, cells))
         if row.get("Module", "").replace("*", "") != "rpu_top":
             continue
-        form = "unrolled" if "unrolled" in row["Configuration"] else "iterative"
+        kind = "unrolled" if "unrolled" in row["Configuration"] else "iterative"
+        form = kind + (", curves + textures" if "Surfaces=0" in row["Configuration"] else "")
         forms[form] = {
             "lut_sites": number(row["LUT sites"]), "ff": number(row["FF"]),
             "dsp": number(row["DSP48E1"]), "bram36": number(row["BRAM36"]),
-            "items_per_cycle": ITEMS_PER_CYCLE[form], "sta_ns": number(row["sta ns"]),
+            "items_per_cycle": ITEMS_PER_CYCLE[kind], "sta_ns": number(row["sta ns"]),
             "source": "estimate" if "estimate" in row["Source"] else "synthesis",
         }
     for form in ITEMS_PER_CYCLE:
         if form not in forms:
             raise SystemExit(f"{resources}: no rpu_top row for the {form} form in the first table")
-    return {f: forms[f] for f in ITEMS_PER_CYCLE}
+    if any(f["source"] != "synthesis" for f in forms.values()):
+        raise SystemExit(f"{resources}: an rpu_top row is not a synthesised figure")
+    return forms
 
 
 FORMS = read_forms(pathlib.Path(__file__).resolve().parent.parent / "docs" / "resources.md")
 
-# Device capacities (AMD/Xilinx data sheets DS180 for 7-series, DS890 for UltraScale).
+# Device capacities (AMD/Xilinx data sheets DS180 for 7-series, DS190 for Zynq-7000, DS890 for
+# UltraScale/UltraScale+): LUTs, flip-flops, DSP slices, 36 Kb block RAMs. The UltraScale parts'
+# DSP48E2 (27 x 18) holds every tile of rpu_mul (25 x 18), and their LUTs count as LUT sites the
+# same way; XCZU7EV's 96 UltraRAM blocks are not counted.
 PARTS = [
     ("XC7A35T", 20_800, 41_600, 90, 50),
+    ("XC7Z020", 53_200, 106_400, 220, 140),
     ("XC7A100T", 63_400, 126_800, 240, 135),
     ("XC7A200T", 133_800, 269_200, 740, 365),
+    ("XC7K325T", 203_800, 407_600, 840, 445),
     ("XCKU040", 242_400, 484_800, 1_920, 600),
+    ("XCZU7EV", 230_400, 460_800, 1_728, 312),
     ("XC7VX690T", 433_200, 866_400, 3_600, 1_470),
 ]
 
@@ -100,40 +109,34 @@ def main():
           "clock, cells only | clock, routed (×5/3) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for name, f in FORMS.items():
-        if f["lut_sites"] is None:
-            continue
         fmax = 1e3 / f["sta_ns"]
         print(f"| {name} | {f['source']} | {f['lut_sites']:,} | {f['ff']:,} | {f['dsp']:,} | "
               f"{f['bram36']} | {f['items_per_cycle']} | {f['sta_ns']} | {fmax:.0f} MHz | "
               f"{fmax / ROUTING_FACTOR:.0f} MHz |")
     print()
-    print("Units per part (the scarcest resource decides):")
+    print("Units per part (the scarcest resource decides; the rpu_top rows above at their "
+          "defaults, the segment RAM of 4,096 descriptors among them):")
     print()
-    print("| part | LUT | FF | DSP48E1 | BRAM36 | " +
-          " | ".join(f"{n} units" for n, f in FORMS.items() if f["lut_sites"]) + " |")
-    print("|---|---|---|---|---|" + "---|" * sum(1 for f in FORMS.values() if f["lut_sites"]))
+    print("| part | LUT | FF | DSP48E1 | BRAM36 | " + " | ".join(FORMS) + " |")
+    print("|---|---|---|---|---|" + "---|" * len(FORMS))
     for part in PARTS:
-        cells = [str(units_per_part(f, part)) for f in FORMS.values() if f["lut_sites"]]
+        cells = [str(units_per_part(f, part)) for f in FORMS.values()]
         print(f"| {part[0]} | {part[1]:,} | {part[2]:,} | {part[3]:,} | {part[4]:,} | " +
               " | ".join(cells) + " |")
     print()
     print("Frames per second at 1920×1080 (routed clock, all units of the part working on one "
           "frame; 0 where no unit fits):")
     print()
-    header = "| scene (frames/s) | pairs per frame | " + " | ".join(
-        f"{p[0]} {n}" for n, f in FORMS.items() if f["lut_sites"] for p in PARTS) + " |"
-    print(header)
-    print("|---|---|" + "---|" * (header.count("|") - 3))
+    print("| scene (frames/s) | form | pairs per frame | " + " | ".join(p[0] for p in PARTS) + " |")
+    print("|---|---|---|" + "---|" * len(PARTS))
     for scene, pairs in PAIRS_1080P.items():
-        cells = []
-        for f in FORMS.values():
-            if not f["lut_sites"]:
-                continue
+        for name, f in FORMS.items():
             rate = 1e9 / (f["sta_ns"] * ROUTING_FACTOR) * f["items_per_cycle"]  # items/s
+            cells = []
             for part in PARTS:
                 u = units_per_part(f, part)
                 cells.append(f"{u * rate / pairs:.1f}" if u else "0")
-        print(f"| {scene} | {pairs:,} | " + " | ".join(cells) + " |")
+            print(f"| {scene} | {name} | {pairs:,} | " + " | ".join(cells) + " |")
 
 
 if __name__ == "__main__":
