@@ -8,6 +8,8 @@
 //   Latency = 2 + ceil(log2(tiles)) cycles (rpu_mul_latency.vh), or more when asked, tiles = ceil(AW'/ChunkA) · ceil(BW'/ChunkB) with
 //   AW' = AW − Signed, BW' = BW − Signed (e.g. 51 × 23 unsigned: 3 · 2 tiles, latency 5;
 //   28 × 28 signed: 2 · 2 tiles, latency 4; 25 × 18 signed: one tile, latency 2).
+// Narrow tiles (a chunk of at most LutTile bits) are shift-and-adds in LUTs (below), and with
+// SwapSides the operands swap sides when that leaves fewer DSP48E1 tiles at the same tile count.
 // One operand pair per cycle, no stall; `tag_i` comes out unchanged with the product (tag_o holds
 // the last valid item's tag while valid_o is low).
 `default_nettype none
@@ -15,6 +17,10 @@
 // only where the tile is wider than this on both sides. A build may set it (+define+).
 `ifndef RPU_MUL_LUT_TILE
 `define RPU_MUL_LUT_TILE 4
+`endif
+// The default SwapSides: 0 (the operands keep their sides; 1 trades LUTs for DSP48E1 further).
+`ifndef RPU_MUL_SWAP
+`define RPU_MUL_SWAP 0
 `endif
 
 module rpu_mul #(
@@ -29,6 +35,8 @@ module rpu_mul #(
   parameter integer LutTile = `RPU_MUL_LUT_TILE,  // a tile with a chunk of at most this many
                                   // unsigned bits is a shift-and-add in LUTs, not a DSP48E1,
                                   // when the product has more than one tile (0: never)
+  parameter integer SwapSides = `RPU_MUL_SWAP,  // 1: the operands swap sides when that leaves
+                                  // fewer DSP48E1 tiles at the same tile count (latency)
   // Derived (do not override).
   parameter integer PW     = AW + BW
 ) (
@@ -43,9 +51,39 @@ module rpu_mul #(
   output wire [TagW-1:0] tag_o
 );
 `include "rpu_mul_latency.vh"
+  // DSP48E1 tiles of an aw × bw product (a's chunks on the DSP's A port): the tiles whose chunks
+  // both have more than lt bits, or the one tile of a one-tile product.
+  function integer rpu_mul_dsp_tiles(input integer aw, input integer bw, input integer s,
+                                     input integer ca, input integer cb, input integer lt);
+    integer na, nb, ia, ib, wa, wb, cnt;
+    begin
+      na = (aw - s + ca - 1) / ca;
+      nb = (bw - s + cb - 1) / cb;
+      cnt = 0;
+      for (ia = 0; ia < na; ia = ia + 1)
+        for (ib = 0; ib < nb; ib = ib + 1) begin
+          wa = ia == na - 1 ? aw - s - ca * (na - 1) : ca;
+          wb = ib == nb - 1 ? bw - s - cb * (nb - 1) : cb;
+          if (na * nb == 1 || (wa > lt && wb > lt)) cnt = cnt + 1;
+        end
+      rpu_mul_dsp_tiles = cnt;
+    end
+  endfunction
   localparam integer NA      = (AW - Signed + ChunkA - 1) / ChunkA;
   localparam integer NB      = (BW - Signed + ChunkB - 1) / ChunkB;
   localparam integer T       = NA * NB;
+  // With SwapSides, the operands swap sides (b's chunks on the DSP's A port) when that gives as
+  // many tiles (so the same latency) but fewer DSP48E1: e.g. 34 × 28 signed, 4 DSP48E1 as it
+  // stands, is 2 DSP and 2 narrow tiles swapped (28's top chunk of 3 bits on the A side).
+  localparam integer SNA     = (BW - Signed + ChunkA - 1) / ChunkA;
+  localparam integer SNB     = (AW - Signed + ChunkB - 1) / ChunkB;
+  localparam integer Swap    = SwapSides != 0 && SNA * SNB == T &&
+                               rpu_mul_dsp_tiles(BW, AW, Signed, ChunkA, ChunkB, LutTile) <
+                               rpu_mul_dsp_tiles(AW, BW, Signed, ChunkA, ChunkB, LutTile) ? 1 : 0;
+  localparam integer UW      = Swap != 0 ? BW : AW;  // the operand on the tiles' A side
+  localparam integer VW      = Swap != 0 ? AW : BW;  // ... and on their B side
+  localparam integer NU      = Swap != 0 ? SNA : NA;
+  localparam integer NV      = Swap != 0 ? SNB : NB;
   localparam integer Natural = `RPU_MUL_LATENCY(AW, BW, Signed, ChunkA, ChunkB);
   localparam integer Levels  = Natural - 2;
   localparam integer Lat     = Latency == 0 ? Natural : Latency;
@@ -63,6 +101,7 @@ module rpu_mul #(
     if (T > 64) $fatal(1, "rpu_mul: more than 64 tiles");
     if (Latency != 0 && Latency < Natural) $fatal(1, "rpu_mul: Latency below the natural one");
     if (LutTile < 0 || LutTile > 8) $fatal(1, "rpu_mul: LutTile must be in 0..8");
+    if (SwapSides != 0 && SwapSides != 1) $fatal(1, "rpu_mul: SwapSides must be 0 or 1");
   end
 
   // Extra latency (Latency above the natural one) delays the operands before the tiles, so the
@@ -139,22 +178,34 @@ module rpu_mul #(
     end
   endfunction
 
-  // Operands extended to whole chunks (sign or zero), so every chunk slice is in range.
-  localparam integer AX = NA * ChunkA + 1;
-  localparam integer BX = NB * ChunkB + 1;
-  wire [AX-1:0] a_x = {{(AX - AW){Signed != 0 ? a_d[AW-1] : 1'b0}}, a_d};
-  wire [BX-1:0] b_x = {{(BX - BW){Signed != 0 ? b_d[BW-1] : 1'b0}}, b_d};
+  // The operands on the tiles' sides (swapped or not), extended to whole chunks (sign or zero),
+  // so every chunk slice is in range.
+  wire [UW-1:0] u_d;
+  wire [VW-1:0] v_d;
+  generate
+    if (Swap != 0) begin : g_swap
+      assign u_d = b_d;
+      assign v_d = a_d;
+    end else begin : g_keep
+      assign u_d = a_d;
+      assign v_d = b_d;
+    end
+  endgenerate
+  localparam integer AX = NU * ChunkA + 1;
+  localparam integer BX = NV * ChunkB + 1;
+  wire [AX-1:0] a_x = {{(AX - UW){Signed != 0 ? u_d[UW-1] : 1'b0}}, u_d};
+  wire [BX-1:0] b_x = {{(BX - VW){Signed != 0 ? v_d[VW-1] : 1'b0}}, v_d};
 
   // ---- stage 1: tile operands (DSP A/B registers); stage 2: tile products (M/P registers) ----
   wire [PW-1:0] leaf [0:Leaves-1];
   genvar ia, ib, n;
   generate
-    for (ia = 0; ia < NA; ia = ia + 1) begin : g_a
-      for (ib = 0; ib < NB; ib = ib + 1) begin : g_b
+    for (ia = 0; ia < NU; ia = ia + 1) begin : g_a
+      for (ib = 0; ib < NV; ib = ib + 1) begin : g_b
         // The top chunk of a signed operand takes the extension bit as its sign; the others
         // are unsigned (a zero sign bit).
-        wire top_a = Signed != 0 && ia == NA - 1;
-        wire top_b = Signed != 0 && ib == NB - 1;
+        wire top_a = Signed != 0 && ia == NU - 1;
+        wire top_b = Signed != 0 && ib == NV - 1;
         reg signed [TA-1:0]    ta_q;
         reg signed [TB-1:0]    tb_q;
         reg signed [TA+TB-1:0] tp_q;
@@ -162,9 +213,9 @@ module rpu_mul #(
           ta_q <= {top_a ? a_x[ia*ChunkA + ChunkA] : 1'b0, a_x[ia*ChunkA +: ChunkA]};
           tb_q <= {top_b ? b_x[ib*ChunkB + ChunkB] : 1'b0, b_x[ib*ChunkB +: ChunkB]};
         end
-        // The chunks' unsigned bits: whole chunks, except the top one (what remains of AW').
-        localparam integer WA = ia == NA - 1 ? AW - Signed - ChunkA * (NA - 1) : ChunkA;
-        localparam integer WB = ib == NB - 1 ? BW - Signed - ChunkB * (NB - 1) : ChunkB;
+        // The chunks' unsigned bits: whole chunks, except the top one (what remains of the operand).
+        localparam integer WA = ia == NU - 1 ? UW - Signed - ChunkA * (NU - 1) : ChunkA;
+        localparam integer WB = ib == NV - 1 ? VW - Signed - ChunkB * (NV - 1) : ChunkB;
         if (T > 1 && WB <= LutTile && WB <= WA) begin : g_lut_b
           // b's chunk is narrow: the sum of a's chunk shifted by each bit of it, the sign bit
           // (of a top chunk of a signed b) with weight −2^WB.
@@ -187,7 +238,7 @@ module rpu_mul #(
         end else begin : g_in
           assign shifted = {ext[KeepW-1:0], {Sh{1'b0}}};
         end
-        assign leaf[ia * NB + ib] = shifted;
+        assign leaf[ia * NV + ib] = shifted;
         wire unused_ext = ^ext;
       end
     end
