@@ -580,8 +580,13 @@ def source_hash(list_path, sources, incdirs, yosys_version):
     return h.hexdigest()
 
 
+def read_args(incdirs, sources, defines):
+    """read_verilog's arguments: the macros (-D), the include directories, the sources."""
+    return " ".join([f"-D{d}" for d in defines] + [f"-I{d}" for d in incdirs] + list(sources))
+
+
 def elaborate(args, list_path, sources, incdirs, work):
-    read = " ".join(f"-I{d}" for d in incdirs) + " " + " ".join(sources)
+    read = read_args(incdirs, sources, args.defines)
     chparam = "".join(f" -chparam {p} {v}" for p, v in args.params)
     script = work / "elaborate.ys"
     il = work / "elaborated.il"
@@ -810,7 +815,7 @@ def run_flow(args):
     # The plan (derived modules, their keys, the tree) is cached under the hash of the sources
     # and parameters: an unchanged design needs no elaboration when every job is cached.
     plan_key = sha(f"{source_hash(list_path, sources, incdirs, YOSYS_VERSION)}\n{args.top}\n"
-                   f"{sorted(args.params)}")
+                   f"{sorted(args.params)}" + (f"\n{sorted(args.defines)}" if args.defines else ""))
     plan_file = cache.plan_path(plan_key)
     plan, elab_secs = None, 0.0
     if plan_file.is_file():
@@ -887,7 +892,7 @@ def run_flow(args):
             note(f"({started[0]}/{n_jobs}) {msg}" if n else msg)
 
     results, failures = {}, []
-    read = " ".join(f"-I{d}" for d in incdirs) + " " + " ".join(sources)
+    read = read_args(incdirs, sources, args.defines)
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         def submit(g):
             return pool.submit(synthesise_group, g, cache, args, work, read, list_path.parent,
@@ -982,7 +987,7 @@ def run_monolithic(args):
     list_path = Path(args.list).resolve()
     sources, incdirs = rtl_files.read_list(list_path)
     work = Path(tempfile.mkdtemp(prefix="synth_hier.mono.", dir=args.work or None))
-    read = " ".join(f"-I{d}" for d in incdirs) + " " + " ".join(sources)
+    read = read_args(incdirs, sources, args.defines)
     chparam = "".join(f" -chparam {p} {v}" for p, v in args.params)
     (work / "mono.ys").write_text(MONO_SCRIPT.format(read=read, top=args.top, chparam=chparam,
                                                      stat=work / "stat.txt"))
@@ -1095,6 +1100,9 @@ def parse_args(argv):
     ap.add_argument("top", help="the top module")
     ap.add_argument("-G", dest="params", action="append", default=[], metavar="PARAM=VALUE",
                     help="a parameter of the top (repeatable)")
+    ap.add_argument("-D", dest="defines", action="append", default=[], metavar="MACRO[=VALUE]",
+                    help="a Verilog macro for every read_verilog (repeatable), e.g. "
+                         "RPU_MUL_LUT_TILE=0: rpu_mul without narrow tiles")
     ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1,
                     help="Yosys processes at once (default: the cores)")
     ap.add_argument("-t", "--timeout", type=float, default=3600,

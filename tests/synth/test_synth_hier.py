@@ -15,7 +15,9 @@ multipliers, delay lines and RAMs under them), in a copy so that it can be edite
     partial sum); elaboration errors (an unknown top, an unknown parameter) are one line and
     exit status 2;
  6. the size bound: a run under --cache-max-mb 0 keeps its own entries and removes the others,
-    which a later run synthesises again.
+    which a later run synthesises again;
+ 7. a macro (-D) reaches the leaf that reads it: only its derived modules synthesised again, and
+    the run without it keeps its cached plan.
 
 Usage: test_synth_hier.py [WORKDIR]   (default: a temporary directory, removed at the end)
 """
@@ -177,6 +179,25 @@ def main():
         rc, r8, _ = flow(work, "after_bound")
         check(rc == 0 and r8["synthesised"] > 0 and r8["totals"] == r4["totals"],
               f"after the bound: the top synthesised again ({r8['synthesised']}), same totals")
+
+        # 7. a macro (-D) is part of the plan and of each job's key: a leaf that reads it runs
+        # again, nothing else does, and the plan without the macro is still the cached one
+        ram = work / "design" / "blocks" / "hier_ram.v"
+        ram.write_text(ram.read_text().replace(
+            "  assign rd_o = mem[ra_i];",
+            "`ifdef HIER_RAM_INVERT\n  assign rd_o = ~mem[ra_i];\n`else\n"
+            "  assign rd_o = mem[ra_i];\n`endif"))
+        rc, r9, _ = flow(work, "macro_off")
+        check(rc == 0 and r9["synthesised"] == 0,
+              f"-D: the leaf reads a macro it is not given: nothing synthesised ({r9['synthesised']})")
+        rc, r10, _ = flow(work, "macro_on", "-D", "HIER_RAM_INVERT")
+        again = sorted(m["hdlname"] for m in (r10 or {}).get("modules", []) if not m["cached"])
+        check(rc == 0 and again == ["hier_ram", "hier_ram"],
+              f"-D HIER_RAM_INVERT: exactly hier_ram's two derived modules synthesised ({again})")
+        rc, r11, _ = flow(work, "macro_off_again")
+        check(rc == 0 and r11["synthesised"] == 0 and r11["elaborated"] is False and
+              r11["totals"] == r9["totals"],
+              "without -D again: the cached plan and totals of the run without the macro")
     finally:
         if not keep and not failures:
             shutil.rmtree(work, ignore_errors=True)
