@@ -98,11 +98,10 @@ nlohmann::json docs_resources(bool defaults, bool unrolled, const std::string& s
       out["routed_clock"] = c[9];
     } else if (!c.empty() && c[0] == "scene (frames/s)") {
       fps_header = c;
-    } else if (!fps_header.empty() && !scene.empty() && !c.empty() && c[0] == scene &&
-               c.size() == fps_header.size()) {
-      for (size_t k = 2; k < c.size(); ++k)
-        if (fps_header[k].ends_with(" " + form))
-          out["fps_1080p"][fps_header[k].substr(0, fps_header[k].size() - form.size() - 1)] = c[k];
+    } else if (!fps_header.empty() && !scene.empty() && c.size() == fps_header.size() &&
+               c.size() > 3 && c[0] == scene && c[1] == form) {
+      // | scene | form | pairs per frame | one column per part |
+      for (size_t k = 3; k < c.size(); ++k) out["fps_1080p"][fps_header[k]] = c[k];
     }
   }
   if (!out.contains("lut_sites")) return {{"note", "no " + form + " row in docs/throughput.md"}};
