@@ -16,8 +16,9 @@
 //   pixels: (i, j, hit, depth, primitive) on a valid/ready stream, one per pixel, from
 //     rpu_resolve fed by the result stream (a result is handed over only when both take it).
 // Inside: input skid register → segment RAM read → rpu_ray_gen → curve: rpu_sphere → rpu_ip →
-// rpu_capture → curve FIFO; texture: rpu_ray_plane → rpu_texture → texture FIFO; surface:
-// surface RAM read → rpu_surface_top (its iterative search ring) → surface FIFO. An order FIFO
+// rpu_capture → curve FIFO; texture: rpu_ray_plane → rpu_texture → texture FIFO; surface: the
+// same rpu_sphere on the bounding sphere → surface RAM read → rpu_surface_top (Sphere = 0, its
+// iterative search ring) → surface FIFO; Surfaces = 0 builds no surface path. An order FIFO
 // of two bits per item (the kind) merges the three in input order; the merged stream feeds the
 // result port and rpu_resolve, which orders the hits of all kinds by the one depth format.
 // The arithmetic pipelines never stall: a work item is only taken from the input register while
@@ -205,7 +206,8 @@ module rpu_top #(
     else         used_q <= used_q + {{FifoLog2{1'b0}}, accept} - {{FifoLog2{1'b0}}, pop};
   end
   // The ring's occupancy, mirrored here at the fixed distance (stage 0, the ray generator, the
-  // surface RAM read, the setup) ahead of the ring (rpu_surface_admit: any fixed distance).
+  // sphere unit, the surface RAM read, the setup) ahead of the ring (rpu_surface_admit: any
+  // fixed distance).
   generate
     if (Surfaces != 0) begin : g_ring
       rpu_surface_admit #(.Period(SfPeriod), .Returns(SfPasses - 1)) u_ring_admit (
