@@ -14,6 +14,7 @@
 +incdir+curve
 +incdir+surface
 +incdir+top
++incdir+axi
 
 // common: the shared arithmetic blocks
 common/rpu_fifo.v
@@ -74,3 +75,13 @@ top/rpu_top.v
 // header: top/rpu_seg_desc.vh
 // header: top/rpu_top_words.vh
 // header: top/rpu_surf_desc.vh
+
+// axi: the AXI4-Lite / AXI4-Stream shell around rpu_top (docs/axi.md)
+axi/rpu_axis_gather.v
+axi/rpu_axis_scatter.v
+axi/rpu_axil_port.v
+axi/rpu_axi.v
+// header: axi/rpu_axi_regs.vh
+// header: axi/rpu_axi_props.vh
+// header: axi/rpu_axi_formal_top.vh
+// header: axi/rpu_axil_port_props.vh

@@ -7,7 +7,8 @@
 # A failing property makes the script exit 1 and print the trace (VCD) file.
 #
 # Usage: scripts/formal.sh [--smoke] [--out DIR] [--solver S] [target ...]
-#   targets: fifo resolve admit top fifo_bug_full fifo_bug_stale top_bug_lost (default: all)
+#   targets: fifo resolve admit top axi fifo_bug_full fifo_bug_stale top_bug_lost
+#            axi_bug_payload axi_bug_early_b (default: all)
 #   --smoke  the default-CI subset: rpu_top only to a short BMC depth (the full depth covers
 #            the reduced pipeline's latency and takes several minutes)
 #   --out    output directory (default build/formal): <target>/{model.ys,yosys.log,*.log,*.vcd}
@@ -40,7 +41,8 @@ while (($#)); do
   esac
   shift
 done
-((${#targets[@]})) || targets=(fifo resolve admit top fifo_bug_full fifo_bug_stale top_bug_lost)
+((${#targets[@]})) || targets=(fifo resolve admit top axi fifo_bug_full fifo_bug_stale top_bug_lost
+                              axi_bug_payload axi_bug_early_b)
 for t in yosys yosys-smtbmc ${solver:-z3 cvc5}; do
   command -v "$t" >/dev/null || { echo "formal.sh: $t: not found (scripts/setup.sh)" >&2; exit 2; }
 done
@@ -57,6 +59,11 @@ top_params="CoordW=12 DirFrac=8 TFrac=8 UnitFrac=8 EdgeFrac=8 InvW=8 SqrtW=16 N=
 top_cut="res_pred1_o res_hit_o res_depth_o res_tau_o res_t_o res_x_o res_ovf_o res_prim_o
   res_pieces_o pix_hit_o pix_depth_o pix_prim_o"
 
+# The AXI shell rpu_axi (RPU_FORMAL_AXI: rpu_top abstracted to free streams that keep the
+# valid/ready rule, rtl/axi/rpu_axi_formal_top.vh) at the reduced widths, on 32-bit streams (the
+# result record takes several beats).
+axi_params="$(echo $top_params) AxisW=32"
+
 # target -> "module|defines|params|bmc depth|induction depth (0: none)|cover depth|expect"
 # Depths: the proof's pipelines are in-order queues of free delay (RPU_FORMAL_TOP), so every kind
 # of result is reachable within ten steps; k-induction up to 12 (it closes at 2: with its base
@@ -72,6 +79,9 @@ declare -A spec=(
   [fifo_bug_full]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
   [fifo_bug_stale]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
   [top_bug_lost]="rpu_top|RPU_FORMAL_TOP|$(echo $top_params)|12|0|0|fail"
+  [axi]="rpu_axi|RPU_FORMAL_AXI|$axi_params|16|8|16|pass"
+  [axi_bug_payload]="rpu_axi|RPU_FORMAL_AXI|$axi_params|12|0|0|fail"
+  [axi_bug_early_b]="rpu_axi|RPU_FORMAL_AXI|$axi_params|12|0|0|fail"
 )
 
 # Deliberate faults (sed expressions on a copy of rtl/common/rpu_fifo.v):
@@ -80,11 +90,21 @@ declare -A spec=(
 #                   arriving at an empty FIFO is announced with the previous entry's data.
 #   top_bug_lost:   rpu_top's curve FIFO is also read when a texture result leaves: a curve
 #                   result is lost, the next one takes its place (order, exactly once).
+#   axi_bug_payload: rpu_axis_scatter (rpu_axi's pixel and result ports) loads a new record
+#                   whenever one is offered, also while its beat is held: TDATA changes while
+#                   TVALID is held (the AXI4-Stream rule).
+#   axi_bug_early_b: rpu_axil_port writes (and answers on B) as soon as AW is taken, without
+#                   waiting for W: a response for a request not yet made (AXI4-Lite).
 declare -A mutation=(
   [top_bug_lost]="s/rd_ready_i(pop \&\& !head_surf \&\& !head_tex)/rd_ready_i(pop \&\& !head_surf)/"
   [fifo_bug_full]="s/assign wr_ready_o = fill != Depth\[Log2Depth:0\];/assign wr_ready_o = 1'b1;/"
   [fifo_bug_stale]="s/    if (load)  out_q <= mem_q/    if (take)  out_q <= mem_q/"
+  [axi_bug_payload]="s/    if (valid_i \&\& ready_o) begin/    if (valid_i) begin/"
+  [axi_bug_early_b]="s/  assign wr_o      = aw_full_q \&\& w_full_q \&\& !b_valid_q;/  assign wr_o      = aw_full_q \&\& !b_valid_q;/"
 )
+# The file each mutation applies to.
+declare -A mutated=([top_bug_lost]=rpu_top.v [fifo_bug_full]=rpu_fifo.v [fifo_bug_stale]=rpu_fifo.v
+                    [axi_bug_payload]=rpu_axis_scatter.v [axi_bug_early_b]=rpu_axil_port.v)
 
 status=0
 summary=()
@@ -111,8 +131,7 @@ for t in "${targets[@]}"; do
   rm -rf "$dir"; mkdir -p "$dir"
   srcs=()
   for f in "${rtl_sources[@]}"; do
-    mfile=rpu_fifo.v
-    [ "$mod" = rpu_top ] && mfile=rpu_top.v
+    mfile=${mutated[$t]:-}
     if [ -n "${mutation[$t]+x}" ] && [ "$(basename "$f")" = "$mfile" ]; then
       sed "${mutation[$t]}" "$f" > "$dir/$mfile"
       cmp -s "$f" "$dir/$mfile" && { echo "formal.sh: $t: mutation did not apply" >&2; exit 2; }

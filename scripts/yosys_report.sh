@@ -74,6 +74,11 @@ declare -A PARAMS=(
   [rpu_skid]="W=76"                          # rpu_top's work-item input register
   [rpu_mul]="AW=51 BW=23 Signed=0"           # the guide pair's L²·w, its widest product
 )
+# Modules priced without a submodule (read as a black box): the AXI shell alone, its rpu_top
+# priced by its own rows.
+declare -A BLACKBOX=(
+  [rpu_axi]="rpu_top"
+)
 # Reduced configurations (-r or module:reduced): the iterative IP, one rpu_ip_step unit reused
 # K = N/N1 = 8 times instead of 8 unrolled step units (about 1/8 of the one-item-per-cycle rate).
 declare -A REDUCED=(
@@ -83,7 +88,7 @@ declare -A REDUCED=(
 # Default module list and run order: roughly by size, the biggest last.
 ALL=(rpu_resolve rpu_fifo rpu_mul rpu_sqrt rpu_chord rpu_div rpu_capture rpu_curve_point rpu_guide_pair rpu_ray_plane
      rpu_ray_gen rpu_texture rpu_sphere rpu_frame rpu_candidate rpu_test_point rpu_ip_step rpu_ip
-     rpu_top)
+     rpu_axi rpu_top)
 
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
@@ -322,6 +327,21 @@ run_one() {
   params="${merged[*]}"
   local config=${params:-defaults}
   if ((red)); then config="$config (reduced)"; fi
+  local read="read_verilog -defer $rtl_read" bb
+  if [[ -n ${BLACKBOX[$mod]:-} ]]; then
+    local keep_src=() lib_src=() f
+    for f in "${rtl_sources[@]}"; do
+      bb=0
+      for m in ${BLACKBOX[$mod]}; do grep -qE "^[[:space:]]*module[[:space:]]+$m\b" "$f" && bb=1; done
+      if ((bb)); then lib_src+=("$f"); else keep_src+=("$f"); fi
+    done
+    read="read_verilog -defer"
+    for d in "${rtl_incdirs[@]}"; do read+=" -I$d"; done
+    read+=" ${keep_src[*]}"$'\n'"read_verilog -lib"
+    for d in "${rtl_incdirs[@]}"; do read+=" -I$d"; done
+    read+=" ${lib_src[*]}"
+    config="$config (${BLACKBOX[$mod]} a black box)"
+  fi
   if ((hier)); then config="$config (hierarchical)"; fi
 
   if ! grep -qxF -- "$mod" <<<"$modules"; then
@@ -339,7 +359,7 @@ run_one() {
     return 0
   fi
   cat >"$work/$tag.ys" <<EOF
-read_verilog -defer $rtl_read
+$read
 hierarchy -check -top $mod$chparam
 synth_xilinx -flatten -noiopad -noclkbuf -top $mod
 tee -q -o $work/$tag.stat stat -tech xilinx

@@ -266,7 +266,7 @@ TEST(HwParamTable, MarkdownHasOneRowPerEntry) {
 // registry's default configuration (no -G) is the default HwParams.
 TEST(HwParamTable, TheRtlDeclaresTheParametersWithTheirDefaults) {
   const std::regex decl(R"(parameter\s+integer\s+([A-Za-z0-9_]+)\s*=\s*(-?[0-9]+))");
-  std::map<std::string, int> top;
+  std::map<std::string, int> top, axi;
   std::set<std::string> anywhere;
   for (const auto& e : fs::recursive_directory_iterator(fs::path(RPU_SOURCE_DIR) / "rtl")) {
     if (e.path().extension() != ".v") continue;
@@ -277,6 +277,7 @@ TEST(HwParamTable, TheRtlDeclaresTheParametersWithTheirDefaults) {
     for (auto it = std::sregex_iterator(s.begin(), s.end(), decl); it != std::sregex_iterator(); ++it) {
       anywhere.insert((*it)[1]);
       if (e.path().filename() == "rpu_top.v") top[(*it)[1]] = std::stoi((*it)[2]);
+      if (e.path().filename() == "rpu_axi.v") axi[(*it)[1]] = std::stoi((*it)[2]);
     }
   }
   ASSERT_FALSE(top.empty()) << "rpu_top.v not found under rtl/";
@@ -285,7 +286,20 @@ TEST(HwParamTable, TheRtlDeclaresTheParametersWithTheirDefaults) {
     SCOPED_TRACE(std::string(d.key));
     EXPECT_TRUE(anywhere.count(std::string(d.verilog))) << d.verilog << " is in no rtl/ module";
     const auto it = top.find(std::string(d.verilog));
-    if (it != top.end()) EXPECT_EQ(it->second, d.def) << "rpu_top.v's default of " << d.verilog;
+    if (it != top.end()) {
+      EXPECT_EQ(it->second, d.def) << "rpu_top.v's default of " << d.verilog;
+    }
+  }
+  // The AXI shell declares rpu_top's parameters again (docs/axi.md): the same, with the same
+  // defaults.
+  ASSERT_FALSE(axi.empty()) << "rpu_axi.v not found under rtl/";
+  for (const auto& [name, value] : top) {
+    const auto it = axi.find(name);
+    if (it == axi.end()) {
+      ADD_FAILURE() << "rpu_axi.v does not declare rpu_top's parameter " << name;
+    } else {
+      EXPECT_EQ(it->second, value) << "rpu_axi.v's default of " << name << " is not rpu_top.v's";
+    }
   }
 }
 
