@@ -131,6 +131,7 @@ BackendResult run_backend(const std::string& backend, const scene::CompiledScene
     ro.shard_out = o.shard_out;
     ro.merge_shards = o.merge_shards;
     ro.fault = o.fault;
+    ro.axi = o.axi;
     ro.trace_pixel = o.trace_pixel;
     ro.trace_path = o.trace_path;
     const sim::RtlRender rr = sim::render_rtl(sc, model, ro);

@@ -31,6 +31,7 @@ struct BackendOptions {
   std::optional<std::pair<int, int>> shard;  // rtl: only share I of N (--shard)
   std::string shard_out;                     // rtl: where --shard writes the share's results
   std::vector<std::string> merge_shards;     // rtl: shard files to check and assemble
+  bool axi = false;                 // rtl: through the AXI shell rpu_axi (docs/axi.md)
   int fault = 0;                    // rtl: the fault-injected build's fault (checker tests;
                                     // sim::RtlOptions::fault)
   std::optional<std::pair<int, int>> trace_pixel;  // rtl: re-run a pixel with a waveform

@@ -59,6 +59,7 @@ struct CommonFlags {
   std::string trace_pixel;   // X,Y
   std::string trace_out = "trace.fst";
   std::string rtl_fault;
+  bool axi = false;          // rtl: through rpu_axi, the AXI shell
   std::string rtl_exe;       // a cosim_<name> executable instead of a built-in configuration
   long long jobs = 0;        // rtl: Verilated instances over contiguous shares (0 = all cores)
   std::string shard;         // rtl: I/N, only that share, its results to -o
@@ -115,6 +116,10 @@ struct CommonFlags {
     app.add_option("--patch-iterations", patch_iterations,
                    "patches: iteration budget of the thesis refiners (steps or directions)")
         ->capture_default_str();
+    app.add_flag("--axi", axi,
+                 "rtl: co-simulate rpu_top inside its AXI shell rpu_axi (docs/axi.md): descriptors "
+                 "over AXI4-Lite, items, pixels and results over AXI4-Stream, through bus-"
+                 "functional models");
     app.add_flag("--rtl-fault{argmin-tie}", rtl_fault,
                  "rtl: use the build with a deliberately injected fault (tests of the checker): "
                  "argmin-tie (the IP's argmin keeps the last minimum: work-item fields) or, as "
@@ -211,6 +216,11 @@ struct CommonFlags {
                                  "from an RPU_COSIM_ONLY build)");
     }
     o.fault = rtl_fault_code(rtl_fault);
+    o.axi = axi;
+    if (axi && (systemc || !rtl_exe.empty() || o.fault))
+      throw Error("--axi", std::string("cannot be combined with ") +
+                               (systemc ? "--systemc" : !rtl_exe.empty() ? "--rtl-exe" : "--rtl-fault") +
+                               " (the AXI shell is built into rpu as its own configurations)");
     o.trace_path = trace_out;
     if (!trace_pixel.empty()) {
       int x = -1, y = -1;
@@ -275,8 +285,8 @@ int render(const std::string& scene_arg, const std::string& backend, const std::
   app::BackendOptions bo = flags.backend_options();
   bo.shard_out = output;  // --shard: -o is the share's result file
   if ((bo.systemc || bo.trace_pixel || bo.fault || !bo.rtl_exe.empty() || bo.shard ||
-       !bo.merge_shards.empty()) && backend != "rtl")
-    throw Error(bo.systemc ? "--systemc" : bo.fault ? "--rtl-fault" :
+       !bo.merge_shards.empty() || bo.axi) && backend != "rtl")
+    throw Error(bo.systemc ? "--systemc" : bo.fault ? "--rtl-fault" : bo.axi ? "--axi" :
                 !bo.rtl_exe.empty() ? "--rtl-exe" : bo.shard ? "--shard" :
                 !bo.merge_shards.empty() ? "--merge-shards" : "--trace-pixel",
                 "applies to --backend rtl only");
@@ -530,7 +540,7 @@ int main(int argc, char** argv) {
                    {"--size", "--max-side", "--systemc", "--trace-pixel", "--trace-out",
                     "--rtl-fault", "--patch-method", "--patch-map-size", "--patch-map-full",
                     "--patch-start", "--patch-tolerance", "--patch-iterations", "--rtl-exe",
-                    "--jobs", "--shard", "--merge-shards"},
+                    "--jobs", "--shard", "--merge-shards", "--axi"},
                    "it prints the parameter set and renders nothing");
       if (!markdown.empty()) return check_stdout(print_markdown(*config_cmd, flags, markdown));
       return check_stdout(print_config(flags));

@@ -84,7 +84,7 @@ class BuildLock {
 bool has_builtin_rtl(const ref::HwParams& p) {
 #if RPU_HAVE_RTL
   for (const auto& rc : sim::rtl_configs())
-    if (!rc.fault && rc.params == p) return true;
+    if (!rc.fault && !rc.axi && rc.params == p) return true;
 #else
   (void)p;
 #endif

@@ -39,12 +39,13 @@ std::uint64_t default_cycle_limit(const FrameSchedule& f) {
 CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
                        const CosimOptions& o) {
   CosimStats st;
-  load(top, f);
+  if (o.load) load(top, f);
   st.load_cycles = 1 + f.segments.size() + f.surfaces.size();
   st.items = f.items.size();
   st.curve_items = f.curve_items;
   st.texture_items = f.texture_items;
   st.surface_items = f.surface_items;
+  top.begin_frame(f.items.size(), f.expected_pixels.size(), o.seed, o.valid_pct);
   std::mt19937_64 rng(o.seed);
   const auto pct = [&](int p) { return p >= 100 || static_cast<int>(rng() % 100) < p; };
   const std::uint64_t limit = o.max_cycles ? o.max_cycles : default_cycle_limit(f);
@@ -55,7 +56,8 @@ CosimStats cosim_frame(TopPorts& top, const FrameSchedule& f, ResultSink& sb,
   std::uint64_t cycle = 0;
   while (!sb.done()) {
     if (o.stall_phases && cycle % 500 == 0) stall = !stall && rng() % 3 == 0;
-    const bool offer = next < f.items.size() && pct(o.valid_pct);
+    // An AXI source keeps offering what it offered: axi_ports.h draws the gaps itself.
+    const bool offer = next < f.items.size() && (top.axi() || pct(o.valid_pct));
     const bool res_ready = !stall && pct(o.res_ready_pct);
     const bool pix_ready = !stall && pct(o.pix_ready_pct);
     top.drive(offer ? &f.items[next] : nullptr, res_ready, pix_ready);

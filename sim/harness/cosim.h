@@ -18,6 +18,8 @@ struct CosimOptions {
   int valid_pct = 100, res_ready_pct = 100, pix_ready_pct = 100;
   bool stall_phases = false;      // also long stretches with both sinks stalled
   std::uint64_t seed = 1;         // of the handshake patterns
+  bool load = true;               // reset and load the descriptors first (false: the unit
+                                  // holds them already)
   std::uint64_t max_cycles = 0;   // 0: 100 × items + 100,000, and 2 × P per surface piece plus
                                   // twice the surface latency (a hang is reported, never waited out)
 };

@@ -87,8 +87,9 @@ std::string systemc_exe(const RtlOptions& o) {
 std::string describe_rtl_configs() {
   std::string s;
   for (const RtlConfig& c : rtl_configs())
-    s += fmt::format("  {}{}{}: {}\n", c.name, c.fault ? " (fault-injected, tests only)" : "",
-                     c.traceable ? " (FST-traceable)" : "", describe(c.params));
+    s += fmt::format("  {}{}{}{}: {}\n", c.name, c.fault ? " (fault-injected, tests only)" : "",
+                     c.traceable ? " (FST-traceable)" : "", c.axi ? " (in the AXI shell, --axi)" : "",
+                     describe(c.params));
   return s.empty() ? "  (none: configure with RPU_SIM=ON)\n" : s;
 }
 
@@ -115,7 +116,7 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
   const RtlConfig* cfg = nullptr;
   const RtlConfig* trace_cfg = nullptr;
   for (const RtlConfig& c : rtl_configs()) {
-    if (c.fault != (o.fault != 0) || c.params != m.params) continue;
+    if (c.fault != (o.fault != 0) || c.axi != o.axi || c.params != m.params) continue;
     if (!cfg || (cfg->traceable && !c.traceable)) cfg = &c;
     if (c.traceable && !trace_cfg) trace_cfg = &c;
   }
@@ -134,11 +135,14 @@ RtlRender render_rtl(const scene::CompiledScene& sc, const ref::ModelScene& m,
     if (!cfg) {
       std::string names;
       for (const RtlConfig& c : rtl_configs())
-        if (c.fault == (o.fault != 0)) names += (names.empty() ? "" : ", ") + c.name;
-      throw Error("--backend rtl", fmt::format("no Verilated rpu_top{} for {} (this build has: "
+        if (c.fault == (o.fault != 0) && c.axi == o.axi)
+          names += (names.empty() ? "" : ", ") + c.name;
+      throw Error(o.axi ? "--axi" : "--backend rtl",
+                  fmt::format("no Verilated rpu_top{} for {} (this build has: "
                                                "{}; `rpu config` lists their parameters, "
                                                "sim/harness/CMakeLists.txt adds others)",
-                                               o.fault ? " with an injected fault" : "",
+                                               o.fault ? " with an injected fault"
+                                               : o.axi ? " in its AXI shell" : "",
                                                describe(m.params), names.empty() ? "none" : names));
     }
     out.harness = "c++";

@@ -22,6 +22,8 @@ struct RtlOptions {
   std::string sc_exe;           // rpu_sc; empty: beside the running executable
   std::string external_exe;     // a cosim_<name> executable (rpu sweep's on-demand builds)
   CosimOptions cosim;           // handshake patterns
+  bool axi = false;             // rpu_top inside its AXI shell rpu_axi (a configuration built
+                                // with AXI; docs/axi.md)
   int fault = 0;                // the fault-injected build's fault (tests of the checker):
                                 // 0 none, 1 argmin-tie, 2 far-hit (rtl_fault_names())
   std::uint64_t x_seed = 0;     // random initial register values (0: Verilator's default)

@@ -11,6 +11,7 @@
 #include "coverage_file.h"
 #include "port_bits.h"
 #include "top_ports.h"
+#include "verilated_context.h"
 
 namespace rpu::sim {
 
@@ -19,11 +20,7 @@ template <class V, bool Traced>
 class VerilatedPorts final : public TopPorts {
  public:
   VerilatedPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p) {
-    ctx_ = std::make_unique<VerilatedContext>();
-    if (x_seed != 0) {
-      ctx_->randReset(2);  // every initial value random (the model is built --x-initial unique)
-      ctx_->randSeed(static_cast<int>(x_seed));
-    }
+    ctx_ = make_context(x_seed);
     top_ = std::make_unique<V>(ctx_.get());
     coverage_.set_name(CoverageFile::program() + "-" + top_->modelName());
     top_->rst_ni = 0;

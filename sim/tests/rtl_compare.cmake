@@ -139,7 +139,9 @@ foreach(bad "no_config|--size~16x16~--n~10~--n1~2|no Verilated rpu_top for n 10"
             "trace_range|--size~16x16~--trace-pixel~500,2|outside the 16x16 image"
             "systemc_unrolled|--size~16x16~--systemc|--systemc: the SystemC model is built"
             "size_syntax|--size~16by16|--size: must be WxH"
-            "fault_name|--size~16x16~--rtl-fault=bogus|--rtl-fault: unknown fault 'bogus' \\(argmin-tie, far-hit\\)")
+            "fault_name|--size~16x16~--rtl-fault=bogus|--rtl-fault: unknown fault 'bogus' \\(argmin-tie, far-hit\\)"
+            "axi_no_config|--size~16x16~--axi|--axi: no Verilated rpu_top in its AXI shell for n 16"
+            "axi_systemc|--size~16x16~--ip~iterative~--axi~--systemc|--axi: cannot be combined with --systemc")
   string(REPLACE "|" ";" parts "${bad}")
   list(GET parts 0 name)
   list(GET parts 1 flags)
@@ -149,5 +151,18 @@ foreach(bad "no_config|--size~16x16~--n~10~--n1~2|no Verilated rpu_top for n 10"
            "-DARGS=render;builtin:curve12;--backend;rtl;${flags};-o;${RPU_CMP_OUT}/bad.png"
            -DEXPECT_RC=1 "-DEXPECT_ERR=${msg}" -P ${RPU_RUN})
   list(APPEND rtl_tests rtl_bad_${name})
+endforeach()
+add_test(NAME rtl_bad_axi_ref COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+         "-DARGS=render;builtin:curve12;--backend;ref;--axi;--size;16x16;-o;${RPU_CMP_OUT}/bad.png"
+         -DEXPECT_RC=1 "-DEXPECT_ERR=--axi: applies to --backend rtl only" -P ${RPU_RUN})
+list(APPEND rtl_tests rtl_bad_axi_ref)
+
+# Through the AXI shell (--axi): the same image as through rpu_top alone, and the same cycle count
+# plus the shell's latency (docs/axi.md), on all three kinds (surf_mix) and on curves.
+foreach(scene surf_mix curve12)
+  add_test(NAME rtl_axi_render_${scene} COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
+           -DSCENE=builtin:${scene} -DSIZE=16x16 -DOUT=${RPU_CMP_OUT}/axi_${scene} -DDELTA=1
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/axi_render.cmake)
+  list(APPEND rtl_tests rtl_axi_render_${scene})
 endforeach()
 set_tests_properties(${rtl_tests} PROPERTIES LABELS "rtl;cosim")

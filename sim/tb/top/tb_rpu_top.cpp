@@ -17,6 +17,7 @@
 
 #include "cosim.h"
 #include "tb_base.h"
+#include "tb_demo_frame.h"
 #include "top_ports.h"
 
 namespace {
@@ -63,22 +64,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const std::uint64_t seed = sim::test_seed("tb_rpu_top");
-  // NAME or NAME+OTHER+...: the first scene's camera with every scene's primitives (a frame
-  // that mixes curve, texture and surface items, so the order FIFO merges the result streams).
-  scene::Scene scn;
-  for (std::size_t at = 0, k = 0; at <= scene_name.size(); ++k) {
-    const std::size_t end = std::min(scene_name.find('+', at), scene_name.size());
-    const scene::Scene part = sim::demo_scene(scene_name.substr(at, end - at));
-    if (k == 0) {
-      scn = part;
-    } else {
-      scn.curves.insert(scn.curves.end(), part.curves.begin(), part.curves.end());
-      scn.textures.insert(scn.textures.end(), part.textures.begin(), part.textures.end());
-      scn.surfaces.insert(scn.surfaces.end(), part.surfaces.begin(), part.surfaces.end());
-      scn.patches.insert(scn.patches.end(), part.patches.begin(), part.patches.end());
-    }
-    at = end + 1;
-  }
+  scene::Scene scn = sim::merged_demo_scene(scene_name);
   scn.camera.width = size;
   scn.camera.height = size;
   const scene::CompiledScene sc = scene::compile_scene(scn);

@@ -33,3 +33,24 @@ set_tests_properties(tb_rpu_top tb_rpu_top_airfield tb_rpu_top_throughput tb_rpu
                      tb_rpu_top_xseeds tb_rpu_top_iter tb_rpu_top_iter_throughput tb_rpu_top_mixed
                      tb_rpu_top_surf_mix tb_rpu_top_surf_backpressure tb_rpu_top_no_surfaces
                      PROPERTIES LABELS rtl)
+
+# rpu_top in its AXI shell rpu_axi (docs/axi.md), through the bus-functional models of
+# sim/harness/axi_ports.h with random TVALID gaps and TREADY back-pressure: a curve, a texture
+# and a surface demo frame on the iterative defaults with 128-bit streams, and all three kinds on
+# (8, 1) without surfaces on 32-bit streams (multi-beat records; the surface items answered with
+# the overflow bit and the UNBUILT_KIND cause); the bad host's session (tb_rpu_axi host).
+add_executable(tb_rpu_axi tb/top/tb_rpu_axi.cpp)
+target_include_directories(tb_rpu_axi PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/tb)
+target_link_libraries(tb_rpu_axi PRIVATE rpu_rtl)
+target_compile_options(tb_rpu_axi PRIVATE -Wno-unused-parameter)
+target_compile_definitions(tb_rpu_axi PRIVATE RPU_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+add_test(NAME tb_rpu_axi_curve COMMAND tb_rpu_axi frame --scene curve12 --size 16)
+add_test(NAME tb_rpu_axi_texture COMMAND tb_rpu_axi frame --scene ellipse6 --size 32)
+add_test(NAME tb_rpu_axi_surface COMMAND tb_rpu_axi frame --scene surf_ellipsoid --size 8)
+add_test(NAME tb_rpu_axi_narrow COMMAND tb_rpu_axi frame --scene surf_mix --size 12
+         --config n8_n1_1_no_surfaces_axi32)
+add_test(NAME tb_rpu_axi_host COMMAND tb_rpu_axi host --scene curve12 --size 16)
+add_test(NAME tb_rpu_axi_host_narrow COMMAND tb_rpu_axi host --scene curve12 --size 16
+         --config n8_n1_1_no_surfaces_axi32)
+set_tests_properties(tb_rpu_axi_curve tb_rpu_axi_texture tb_rpu_axi_surface tb_rpu_axi_narrow
+                     tb_rpu_axi_host tb_rpu_axi_host_narrow PROPERTIES LABELS rtl)
