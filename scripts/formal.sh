@@ -100,7 +100,7 @@ declare -A mutation=(
   [fifo_bug_full]="s/assign wr_ready_o = fill != Depth\[Log2Depth:0\];/assign wr_ready_o = 1'b1;/"
   [fifo_bug_stale]="s/    if (load)  out_q <= mem_q/    if (take)  out_q <= mem_q/"
   [axi_bug_payload]="s/    if (valid_i \&\& ready_o) begin/    if (valid_i) begin/"
-  [axi_bug_early_b]="s/  assign wr_o      = aw_full_q \&\& w_full_q \&\& !b_valid_q;/  assign wr_o      = aw_full_q \&\& !b_valid_q;/"
+  [axi_bug_early_b]="s/  assign wr_o      = aw_full_q \&\& w_full_q \&\& !b_valid_q \&\& !wr_hold_i;/  assign wr_o      = aw_full_q \&\& !b_valid_q \&\& !wr_hold_i;/"
 )
 # The file each mutation applies to.
 declare -A mutated=([top_bug_lost]=rpu_top.v [fifo_bug_full]=rpu_fifo.v [fifo_bug_stale]=rpu_fifo.v

@@ -115,14 +115,15 @@ module rpu_axi #(
       $fatal(1, "rpu_axi: a descriptor is wider than the DESC_DATA window");
   end
 
-  // ---- AXI4-Lite ----
+  // ---- AXI4-Lite (writes wait while a soft reset runs) ----
+  wire        srst_on;
   wire        wr, rd;
   wire [11:0] wr_addr, rd_addr;
   wire [31:0] wr_data, rd_data;
   wire [3:0]  wr_strb;
   wire [1:0]  wr_resp, rd_resp;
   rpu_axil_port #(.AddrW(12)) u_lite (
-    .clk_i, .rst_ni,
+    .clk_i, .rst_ni, .wr_hold_i(srst_on),
     .awaddr_i(s_axil_awaddr_i), .awvalid_i(s_axil_awvalid_i), .awready_o(s_axil_awready_o),
     .wdata_i(s_axil_wdata_i), .wstrb_i(s_axil_wstrb_i), .wvalid_i(s_axil_wvalid_i),
     .wready_o(s_axil_wready_o), .bresp_o(s_axil_bresp_o), .bvalid_o(s_axil_bvalid_o),
@@ -149,9 +150,9 @@ module rpu_axi #(
   wire [1:0]  wr_acc = reg_access(wr_word);
   wire [1:0]  rd_acc = reg_access(rd_word);
 
-  // ---- frame state, srst_on reset ----
+  // ---- frame state, soft reset ----
   reg        busy_q, drain_q, done_q, irq_en_q;
-  reg [2:0]  srst_q;                   // srst_on reset: rpu_top held in reset while non-zero
+  reg [2:0]  srst_q;                   // soft reset: rpu_top held in reset while non-zero
   reg        top_rst_nq;
   reg [ErrorCauses-1:0] err_q;
   reg [31:0] discarded_q, frames_q;
@@ -163,7 +164,7 @@ module rpu_axi #(
   reg [63:0] cycles_q;
   reg [31:0] curve_in_q, tex_in_q, surf_in_q, curve_out_q, tex_out_q, surf_out_q;
   reg [31:0] pix_cnt_q, hits_q, in_stall_q, out_stall_q;
-  wire       srst_on = srst_q != 3'd0;
+  assign srst_on = srst_q != 3'd0;
 
   // ---- descriptor staging and commit ----
   // A byte's flip-flops take its WSTRB as their clock enable (no merge logic).
@@ -294,9 +295,14 @@ module rpu_axi #(
     .tdata_o(m_pix_tdata_o), .tlast_o(m_pix_tlast_o), .tvalid_o(m_pix_tvalid_o),
     .tready_i(m_pix_tready_i), .final_o(pix_final)
   );
-  wire pix_out = m_pix_tvalid_o && m_pix_tready_i && pix_final;
+  // A record on an output port when a soft reset comes is still handed out (the AXI4-Stream
+  // rule) but belongs to no frame: it is not counted (stale).
+  reg  pix_stale_q, res_stale_q;
+  wire pix_leave = m_pix_tvalid_o && m_pix_tready_i && pix_final;
+  wire pix_out   = pix_leave && !pix_stale_q;
   wire res_take = res_valid && res_ready;
-  wire res_out;
+  wire res_leave;
+  wire res_out = res_leave && !res_stale_q;
   if (ItemResults != 0) begin : g_res
     wire res_last_frame = drain_q && res_load_q == PendOne;
     wire final_beat;
@@ -325,10 +331,10 @@ module rpu_axi #(
       .tdata_o(m_res_tdata_o), .tlast_o(m_res_tlast_o), .tvalid_o(m_res_tvalid_o),
       .tready_i(m_res_tready_i), .final_o(final_beat)
     );
-    assign res_out = m_res_tvalid_o && m_res_tready_i && final_beat;
+    assign res_leave = m_res_tvalid_o && m_res_tready_i && final_beat;
   end else begin : g_no_res
     assign res_ready      = 1'b1;
-    assign res_out        = 1'b0;
+    assign res_leave      = 1'b0;
     assign m_res_tdata_o  = '0;
     assign m_res_tlast_o  = 1'b0;
     assign m_res_tvalid_o = 1'b0;
@@ -344,6 +350,17 @@ module rpu_axi #(
   wire start     = wr_ctrl && wbits[CtrlStartB] && !busy_q && !srst_on;
   wire start_bad = wr_ctrl && wbits[CtrlStartB] && busy_q;
   wire srst_req  = wr_ctrl && wbits[CtrlSoftResetB];
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      pix_stale_q <= 1'b0;
+      res_stale_q <= 1'b0;
+    end else begin
+      if (srst_req) pix_stale_q <= m_pix_tvalid_o && !pix_leave;
+      else if (pix_leave) pix_stale_q <= 1'b0;
+      if (srst_req) res_stale_q <= m_res_tvalid_o && !res_leave;
+      else if (res_leave) res_stale_q <= 1'b0;
+    end
+  end
   wire wr_ro     = wr && !wr_win && wr_acc == 2'd1;
   wire wr_ok     = wr_win || wr_acc[1];
   wire rd_known  = rd_win || rd_acc != 2'd0;

@@ -2,7 +2,7 @@
 // one read access port. AW and W are taken independently into one-entry registers (AWREADY,
 // WREADY: the register is empty); when both are held and no write response is pending, the
 // write goes to the register file (wr_o, one cycle; its response wr_resp_i is taken with it)
-// and BVALID rises the next cycle. AR is taken into a register (ARREADY: empty); when no read
+// and BVALID rises the next cycle; wr_hold_i keeps it waiting (a soft reset in progress). AR is taken into a register (ARREADY: empty); when no read
 // response is pending the read goes to the register file (rd_o; rd_data_i and rd_resp_i from
 // the registered address) and RVALID rises the next cycle. Every output is a flip-flop or a
 // register's emptiness, so B and R hold still until taken; one response per request, none
@@ -14,6 +14,7 @@ module rpu_axil_port #(
 ) (
   input  wire             clk_i,
   input  wire             rst_ni,
+  input  wire             wr_hold_i,  // hold a write (it goes to the register file after)
   // AXI4-Lite slave
   input  wire [AddrW-1:0] awaddr_i,
   input  wire             awvalid_i,
@@ -58,7 +59,7 @@ module rpu_axil_port #(
   assign rdata_o   = r_data_q;
   assign rresp_o   = r_resp_q;
 
-  assign wr_o      = aw_full_q && w_full_q && !b_valid_q;
+  assign wr_o      = aw_full_q && w_full_q && !b_valid_q && !wr_hold_i;
   assign wr_addr_o = aw_addr_q;
   assign wr_data_o = w_data_q;
   assign wr_strb_o = w_strb_q;

@@ -37,6 +37,7 @@ class AxiHost : public TopPorts {
       throw std::runtime_error(fmt::format("rpu_axi: read of 0x{:03X} answered {}", addr, r));
     return v;
   }
+  virtual bool pix_offered() const = 0;     // m_pix's TVALID (a pixel record's beat, any one)
   virtual bool irq() const = 0;
   virtual std::uint64_t clock() const = 0;  // cycles since construction
   virtual int axis_bits() const = 0;        // TDATA bits of s_item and m_pix
@@ -274,6 +275,7 @@ class VerilatedAxiPorts final : public AxiHost {
     throw std::runtime_error(fmt::format("rpu_axi: no read response for 0x{:03X} in {} cycles",
                                          addr, kLiteLimit));
   }
+  bool pix_offered() const override { return top_->m_pix_tvalid_o; }
   bool irq() const override { return top_->irq_o; }
   std::uint64_t clock() const override { return clock_; }
   int axis_bits() const override { return axis_bits_; }

@@ -8,8 +8,8 @@
 //   host   bad host behaviour, each with its defined answer: reads and writes outside the map,
 //          writes to read-only registers, commits outside a RAM, an item before START, START and
 //          a commit during a frame, TLAST on an item that is not its pixel's last, SOFT_RESET in
-//          the middle of a frame (the next frame is still right); the identification block and
-//          the staging window's byte strobes
+//          the middle of a frame and with a pixel held on m_pix (the next frame is still right
+//          and ends); the identification block and the staging window's byte strobes
 // Options: --scene NAME[+NAME...] (default curve12), --size N (default 16), --config NAME (an AXI
 // configuration of rpu_rtl, default n16_n1_2_iterative_axi).
 #include <cstdio>
@@ -253,11 +253,49 @@ void host(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
   } else {
     std::printf("(the first pixel has one item: the BAD_LAST case needs two; skipped)\n");
   }
+  // SOFT_RESET while a pixel waits on m_pix (TREADY low): it is still handed out (the AXI4-Stream
+  // rule), counted in no frame, and the next frame ends (DONE) as if it had not been there.
+  {
+    h.begin_frame(one.items.size(), 1, o.seed, 100);
+    for (const auto& it : one.items) {
+      bool taken = false;
+      for (int k = 0; k < 2000 && !taken; ++k) {
+        h.drive(&it, true, false);
+        taken = h.item_ready();
+        h.tick();
+      }
+      expect(taken, "an item of the frame SOFT_RESET interrupts");
+    }
+    bool waiting = false;
+    for (int k = 0; k < 20000 && !waiting; ++k) {
+      h.drive(nullptr, true, false);
+      waiting = h.pix_offered();
+      if (!waiting) h.tick();
+    }
+    expect(waiting, "a pixel waiting on m_pix before SOFT_RESET");
+    expect_eq(h.lite_write(RPU_AXI_CTRL, RPU_AXI_CTRL_SOFT_RESET_MASK), 0, "SOFT_RESET, pixel held");
+    for (int k = 0; k < 8; ++k) {  // past the soft reset's 4 cycles, the pixel still held
+      h.drive(nullptr, true, false);
+      expect(h.pix_offered(), "the held pixel withdrawn by SOFT_RESET");
+      h.tick();
+    }
+    bool left = false;
+    for (int k = 0; k < 100 && !left; ++k) {
+      h.drive(nullptr, true, true);
+      left = h.pix_valid();
+      h.tick();
+    }
+    expect(left, "the held pixel handed out after SOFT_RESET");
+    expect_eq(h.read(RPU_AXI_PIXELS_OUT), 0, "PIXELS_OUT after the held pixel left");
+  }
   // The whole frame after all that, the descriptors as loaded at the start.
   sim::Scoreboard sb(f, m, 4);
   const sim::CosimStats st = sim::cosim_frame(h, f, sb, again);
   for (const auto& r : sb.reports()) std::printf("FAILURE %s\n", r.c_str());
   expect(sb.ok() && !st.timed_out, "the whole frame after the bad host's session");
+  expect(wait_done(h, 1000), "DONE after the whole frame after the bad host's session");
+  expect_eq(h.read(RPU_AXI_PIXELS_OUT), f.expected_pixels.size(),
+            "PIXELS_OUT of the whole frame after the bad host's session");
   for (const auto& e : h.protocol_errors()) expect(false, e);
   std::printf("host: %zu-item frame still right after every bad access\n", f.items.size());
 }
