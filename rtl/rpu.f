@@ -28,6 +28,7 @@ common/rpu_mul.v
 common/rpu_mul_vec.v
 // header: common/rpu_mul_latency.vh
 // header: common/rpu_widths.vh
+// header: common/rpu_latency_check.vh
 common/rpu_sqrt.v
 common/rpu_div.v
 common/rpu_cordic.v

@@ -31,6 +31,7 @@
 // integer constant functions below (atan series, Machin's π, integer square root): the twin's
 // cordic_tables does the same integer arithmetic.
 `default_nettype none
+`include "rpu_latency_check.vh"
 
 module rpu_cordic #(
   parameter integer W     = 32,  // coordinate width in and out, two's complement (6..48)
@@ -367,11 +368,7 @@ module rpu_cordic #(
   assign y_o     = yo_q;
   assign angle_o = angle_q;
   assign tag_o   = tag_q;
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_cordic")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_cordic")
 endmodule
 
 `default_nettype wire

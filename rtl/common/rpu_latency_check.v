@@ -1,5 +1,6 @@
 // rpu_latency_check: a simulation-only check that a unit's declared latency is its schedule
-// (instantiated under `ifndef SYNTHESIS`, like rpu_surface_ip_step's check of rpu_indicator;
+// (instantiated under `ifndef SYNTHESIS`, by the macro `RPU_LATENCY_CHECK of rpu_latency_check.vh
+// for one stretch, like rpu_surface_ip_step's check of rpu_indicator;
 // empty under FORMAL too, since Yosys's formal front end has no $fatal in an always block).
 // Each of Segments stretches of the unit's own stages is measured on the first item after reset:
 // the cycles from its first in_i[s] to its first out_i[s]. Once every stretch has seen its item,

@@ -12,6 +12,7 @@
 //   1        depth > 0, the hit
 // Latency = LatM + 3 cycles (7 at the defaults).
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_capture #(
@@ -125,11 +126,7 @@ module rpu_capture #(
   // The tag loads only with a valid operand, so it leaves a flip-flop, not a shift-register LUT.
   rpu_stage #(.W(TagW), .Hold(1)) u_s4_tag (
     .clk_i, .rst_ni, .valid_i(valid_q3), .d_i(tag_q3), .valid_o(valid_q4_unused), .q_o(tag_o));
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_capture")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_capture")
 endmodule
 
 `default_nettype wire

@@ -18,6 +18,7 @@
 // flat, straight) or in (−2^S, 0] (pre-shifted root), |u1·G1 + u2·G2| ≤ 9·2^S + 2: it fits for
 // S ≤ CW − 8, i.e. every SqrtW ≥ 26 or 0 (in practice t stays within a few LSB of [0, 1]).
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_curve_point #(
@@ -126,11 +127,7 @@ module rpu_curve_point #(
     .clk_i, .rst_ni, .valid_i(u_valid), .d_i({x_next, tag_u}), .valid_o, .q_o({x_o, tag_o}));
 
   wire unused_products = ^{g1omt[GW+OmW-1:TFrac+GkW], g1omt[TFrac-1:0], g2t[TFrac-1:0]};
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_curve_point")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_curve_point")
 endmodule
 
 `default_nettype wire

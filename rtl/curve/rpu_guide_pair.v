@@ -21,6 +21,7 @@
 // Over every port value g ∈ (−2^S, 2^(CW+1)) (g ≤ sqrt(floor(L2·w)) < 2^(CW+1/2)), which fits
 // CW+2 signed bits since S ≤ CW−3; within the descriptor formats g ≤ L/2 < 2^CW.
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_guide_pair #(
@@ -282,11 +283,7 @@ module rpu_guide_pair #(
     .clk_i, .rst_ni, .valid_i(sq1_valid),
     .d_i({g1_next, g2_next, sb_w, sb1[HW] | sb2[HW], sb_tag}),
     .valid_o, .q_o({g1_o, g2_o, w_o, ovf_o, ptag_out}));
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_guide_pair")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_guide_pair")
 endmodule
 
 `default_nettype wire

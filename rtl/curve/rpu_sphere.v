@@ -33,6 +33,7 @@
 // Latency = root + 9 + L1 + L2 + L3 + L4 + chord cycles (57 at the defaults; ref::sphere_latency).
 // No backpressure inside (rpu_top reserves room).
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_sphere #(
@@ -587,11 +588,7 @@ module rpu_sphere #(
   assign alpha_o      = alpha;
   assign beta_o       = beta;
   assign ovf_o        = ovf_r | (pred1_r & (alpha_ovf | beta_ovf));
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_sphere")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_sphere")
 endmodule
 
 `default_nettype wire

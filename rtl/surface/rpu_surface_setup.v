@@ -70,6 +70,7 @@
 // ref::surface_setup_latency). No stage has two wide carry chains in series.
 // No backpressure inside (the enclosing top reserves room).
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_surface_setup #(
@@ -732,11 +733,7 @@ module rpu_surface_setup #(
   assign ovf_o         = c14_q[2];
   assign x_negative_o  = c14_q[1];
   assign last_turn_o   = c14_q[0];
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_surface_setup")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_surface_setup")
 endmodule
 
 `default_nettype wire

@@ -26,6 +26,7 @@
 // bits (exact whenever the result is used) and the sum is exact in DepthW bits. For an invalid
 // point the depth products' operands are zeroed, so the depth is zero as the twin's.
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_ray_plane #(
@@ -209,11 +210,7 @@ module rpu_ray_plane #(
   // bits of p0 − h above DqW only matter for an invalid point (caught by the range test).
   wire unused_bits = ^{ptx[PtW-1], ptx[FV-1:0], pty[PtW-1], pty[FV-1:0],
                        fx[FxW-1:DqW], fy[FxW-1:DqW]};
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_ray_plane")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_ray_plane")
 endmodule
 
 `default_nettype wire

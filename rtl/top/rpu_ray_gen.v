@@ -30,6 +30,7 @@
 // Under them the sum is computed modulo 2^(4+FV+14), which gives the exact value's low bits and
 // hence exactly the twin's v. The edge vectors are exact for every input (EdgeOutW bits).
 `default_nettype none
+`include "rpu_latency_check.vh"
 `include "rpu_widths.vh"
 
 module rpu_ray_gen #(
@@ -239,11 +240,7 @@ module rpu_ray_gen #(
     .clk_i, .rst_ni, .valid_i(m3_valid),
     .d_i({c3[SbV +: 3*VW], o_vhat, o_el, o_er, o_et, o_eb, c3[SbTag +: PTagW]}),
     .valid_o, .q_o({v_o, vhat_o, e_left_o, e_right_o, e_top_o, e_bottom_o, ptag_out}));
-`ifndef SYNTHESIS
-  // The declared latency is the schedule (rtl/common/rpu_latency_check.v).
-  rpu_latency_check #(.Latency(Latency), .Segments(1), .Name("rpu_ray_gen")) u_latency_check (
-    .clk_i, .rst_ni, .in_i(valid_i), .out_i(valid_o));
-`endif
+  `RPU_LATENCY_CHECK(Latency, "rpu_ray_gen")
 endmodule
 
 `default_nettype wire
