@@ -76,6 +76,10 @@ top/rpu_top.v
 // header: top/rpu_seg_desc.vh
 // header: top/rpu_top_words.vh
 // header: top/rpu_surf_desc.vh
+// header: top/rpu_top_props.vh
+// header: top/rpu_top_formal_ray.vh
+// header: top/rpu_top_formal_paths.vh
+// header: top/rpu_top_formal_surface.vh
 
 // axi: the AXI4-Lite / AXI4-Stream shell around rpu_top (docs/axi.md)
 axi/rpu_axis_gather.v
