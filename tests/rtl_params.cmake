@@ -1,0 +1,41 @@
+# CTest rtl_params_catches: scripts/check_rtl_params.py on a copy of rtl/ and the parameter table:
+# the copy passes; a module with a wrong default of a table parameter (rpu_chord's TFrac) fails
+# naming the file, the line and the table's value; a module that declares one of rpu_top's
+# parameters with another default (rpu_axi's IdxW) fails naming rpu_top's.
+# Usage: cmake -DPYTHON=<python3> -DSRC=<checkout> -DWORK=<scratch dir> -P rtl_params.cmake
+cmake_minimum_required(VERSION 3.25)
+function(fresh_copy)
+  file(REMOVE_RECURSE ${WORK})
+  file(MAKE_DIRECTORY ${WORK}/ref/model)
+  file(COPY ${SRC}/rtl DESTINATION ${WORK})
+  file(COPY_FILE ${SRC}/ref/model/hw_params.def ${WORK}/ref/model/hw_params.def)
+endfunction()
+function(check want_rc want_text what)
+  execute_process(COMMAND ${PYTHON} ${SRC}/scripts/check_rtl_params.py --root ${WORK}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL want_rc)
+    message(FATAL_ERROR "${what}: exit ${rc}, expected ${want_rc}\n${out}${err}")
+  endif()
+  string(FIND "${out}${err}" "${want_text}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "${what}: the output does not say '${want_text}':\n${out}${err}")
+  endif()
+  message(STATUS "${what}: exit ${rc}: ${out}")
+endfunction()
+function(edit file from to)
+  file(READ ${WORK}/${file} text)
+  string(REPLACE "${from}" "${to}" changed "${text}")
+  if(changed STREQUAL text)
+    message(FATAL_ERROR "the fixture edit '${from}' did not apply to ${file}")
+  endif()
+  file(WRITE ${WORK}/${file} "${changed}")
+endfunction()
+
+fresh_copy()
+check(0 "agree with the table" "the committed RTL")
+edit(rtl/curve/rpu_chord.v "parameter integer TFrac = 24" "parameter integer TFrac = 20")
+check(1 "rtl/curve/rpu_chord.v:" "a wrong default of a table parameter")
+fresh_copy()
+edit(rtl/axi/rpu_axi.v "parameter integer IdxW     = 14" "parameter integer IdxW     = 12")
+check(1 "IdxW = 12, rpu_top.v declares 14" "a wrong default of one of rpu_top's parameters")
+file(REMOVE_RECURSE ${WORK})
