@@ -51,6 +51,8 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+import rtl_files  # scripts/rtl_files.py: the one Python reader of rtl/rpu.f
+
 BEGIN = "<!-- coverage-table:begin -->"
 END = "<!-- coverage-table:end -->"
 LINE_PAGES = ("v_line", "v_branch")
@@ -122,10 +124,8 @@ def rtl_modules(root):
     if not lst.is_file():
         return None
     mods = []
-    for line in lst.read_text().splitlines():
-        line = line.split("//", 1)[0].strip()
-        if not line or line.startswith(("+", "-")):
-            continue
+    sources, _ = rtl_files.read_list(lst)
+    for line in sources:
         src = lst.parent / line
         for m in re.finditer(r"^\s*module\s+(\w+)", src.read_text(), re.M):
             mods.append(m.group(1))

@@ -37,6 +37,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+import rtl_files  # scripts/rtl_files.py: the one Python reader of rtl/rpu.f
+
 ROOT = Path(__file__).resolve().parent.parent
 EQUIVALENT = ROOT / "sim" / "mutation" / "equivalent"  # <module>.tsv: the equivalent survivors
 RTL_LIST = ROOT / "rtl" / "rpu.f"  # the RTL file list (its +incdir+ lines: the include directories)
@@ -134,12 +136,8 @@ def read_manifest(build: Path) -> dict[str, tuple[str, list[str], list[str], lis
 
 def rtl_include_args() -> str:
     """Yosys -I options for the include directories of rtl/rpu.f (relative to the checkout)."""
-    dirs = []
-    for line in RTL_LIST.read_text().splitlines():
-        line = line.split("//", 1)[0].strip()
-        if line.startswith("+incdir+"):
-            dirs.append(rel(str(RTL_LIST.parent / line[len("+incdir+"):])))
-    return " ".join(f"-I{d}" for d in dirs)
+    _, incdirs = rtl_files.read_list(RTL_LIST)
+    return " ".join(f"-I{rel(str(RTL_LIST.parent / d))}" for d in incdirs)
 
 
 def rel(p: str) -> str:

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
+#include "cosim.h"
 #include "tb_common.h"
 
 namespace rpu::sim {
@@ -26,6 +29,45 @@ inline scene::Scene merged_demo_scene(const std::string& names) {
     at = end + 1;
   }
   return scn;
+}
+
+// The top-level testbenches' command line, MODE [--scene NAME[+NAME...]] [--size N] [--config
+// NAME] [--x-seed S], and the frame it names: the configuration (an AXI one when `axi`), the
+// scene at N × N, the model's quantised scene and the frame's schedule.
+struct TopBench {
+  std::string mode = "frame", scene = "curve12", config;
+  int size = 64;
+  std::uint64_t x_seed = 0;
+  const RtlConfig* cfg = nullptr;
+  ref::ModelScene model;
+  FrameSchedule frame;
+};
+
+// Fills `b` (its fields hold the defaults); prints "FAILURE: ..." and returns false when the
+// configuration is not in this build.
+inline bool top_bench(int argc, char** argv, bool axi, TopBench& b) {
+  for (int a = 1; a < argc; ++a) {
+    const std::string s = argv[a];
+    if (s == "--scene" && a + 1 < argc) b.scene = argv[++a];
+    else if (s == "--size" && a + 1 < argc) b.size = std::atoi(argv[++a]);
+    else if (s == "--x-seed" && a + 1 < argc) b.x_seed = std::strtoull(argv[++a], nullptr, 0);
+    else if (s == "--config" && a + 1 < argc) b.config = argv[++a];
+    else b.mode = s;
+  }
+  for (const auto& c : rtl_configs())
+    if (c.name == b.config && c.axi == axi) b.cfg = &c;
+  if (!b.cfg) {
+    std::printf("FAILURE: no %sconfiguration %s in this build\n", axi ? "AXI " : "",
+                b.config.c_str());
+    return false;
+  }
+  scene::Scene scn = merged_demo_scene(b.scene);
+  scn.camera.width = b.size;
+  scn.camera.height = b.size;
+  const scene::CompiledScene sc = scene::compile_scene(scn);
+  b.model = ref::quantize_scene(sc, b.cfg->params);
+  b.frame = schedule_frame(sc, b.model, ref::RefOptions{});
+  return true;
 }
 
 }  // namespace rpu::sim

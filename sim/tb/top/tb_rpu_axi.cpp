@@ -45,13 +45,24 @@ void clear_errors(AxiHost& h) {
   expect_eq(err(h), 0, "ERROR after W1C");
 }
 
-// Runs clocks with the outputs ready and nothing offered until DONE (or `limit` clocks).
-bool wait_done(AxiHost& h, int limit) {
-  for (int k = 0; k < limit && !h.watch().done; ++k) {
-    h.drive(nullptr, true, true);
-    h.tick();
+// Clocks with `item` offered (nullptr: none) and the sinks' TREADY as given until `until()`
+// holds after the inputs are set, at most `limit` clocks; returns whether it held. With `edge`
+// the clock edge of the cycle where it holds runs too (its handshake happens).
+template <class F>
+bool clock_until(AxiHost& h, const sim::WorkItem* item, bool res_ready, bool pix_ready, int limit,
+                 F until, bool edge = true) {
+  for (int k = 0; k < limit; ++k) {
+    h.drive(item, res_ready, pix_ready);
+    const bool held = until();
+    if (!held || edge) h.tick();
+    if (held) return true;
   }
-  return h.watch().done;
+  return false;
+}
+
+// Clocks with the outputs ready and nothing offered until DONE (or `limit` clocks).
+bool wait_done(AxiHost& h, int limit) {
+  return clock_until(h, nullptr, true, true, limit, [&] { return h.watch().done; }, false);
 }
 
 // The frame through the shell, then the counters against the BFMs' counts.
@@ -104,13 +115,7 @@ void frame(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
 
 // One item driven by hand until taken (at most `limit` clocks); returns whether it was.
 bool send(AxiHost& h, const sim::WorkItem& it, int limit = 200) {
-  for (int k = 0; k < limit; ++k) {
-    h.drive(&it, false, false);
-    const bool taken = h.item_ready();
-    h.tick();
-    if (taken) return true;
-  }
-  return false;
+  return clock_until(h, &it, false, false, limit, [&] { return h.item_ready(); });
 }
 
 void host(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
@@ -188,12 +193,9 @@ void host(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
 
   // An item before START: taken, discarded, counted; no pixel comes.
   expect(send(h, f.items.front()), "an item before START is taken (TREADY) and discarded");
-  for (int k = 0; k < 2000; ++k) {
-    h.drive(nullptr, true, true);
-    expect(!h.pix_valid() && !h.res_valid(), "a pixel or result from a discarded item");
-    if (h.pix_valid() || h.res_valid()) break;
-    h.tick();
-  }
+  expect(!clock_until(h, nullptr, true, true, 2000,
+                      [&] { return h.pix_valid() || h.res_valid(); }, false),
+         "a pixel or result from a discarded item");
   expect_eq(h.read(RPU_AXI_DISCARDED), 1, "DISCARDED after an item before START");
   expect_eq(err(h), RPU_AXI_ERROR_ITEM_IDLE_MASK, "ERROR after an item before START");
   clear_errors(h);
@@ -240,13 +242,8 @@ void host(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
     cut.items[0].last = false;  // sent as is; TLAST on it (the frame's only item)
     h.begin_frame(1, 1, o.seed, 100);
     expect(send(h, cut.items[0]), "the BAD_LAST item taken");
-    bool pixel = false;
-    for (int k = 0; k < 20000 && !pixel; ++k) {
-      h.drive(nullptr, true, true);
-      pixel = h.pix_valid();
-      h.tick();
-    }
-    expect(pixel, "a pixel for a frame ended by TLAST on a non-last item");
+    expect(clock_until(h, nullptr, true, true, 20000, [&] { return h.pix_valid(); }),
+           "a pixel for a frame ended by TLAST on a non-last item");
     expect(wait_done(h, 1000), "DONE after a frame ended by TLAST on a non-last item");
     expect_eq(err(h), RPU_AXI_ERROR_BAD_LAST_MASK, "ERROR after TLAST on a non-last item");
     clear_errors(h);
@@ -257,35 +254,17 @@ void host(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
   // rule), counted in no frame, and the next frame ends (DONE) as if it had not been there.
   {
     h.begin_frame(one.items.size(), 1, o.seed, 100);
-    for (const auto& it : one.items) {
-      bool taken = false;
-      for (int k = 0; k < 2000 && !taken; ++k) {
-        h.drive(&it, true, false);
-        taken = h.item_ready();
-        h.tick();
-      }
-      expect(taken, "an item of the frame SOFT_RESET interrupts");
-    }
-    bool waiting = false;
-    for (int k = 0; k < 20000 && !waiting; ++k) {
-      h.drive(nullptr, true, false);
-      waiting = h.pix_offered();
-      if (!waiting) h.tick();
-    }
-    expect(waiting, "a pixel waiting on m_pix before SOFT_RESET");
+    for (const auto& it : one.items)
+      expect(clock_until(h, &it, true, false, 2000, [&] { return h.item_ready(); }),
+             "an item of the frame SOFT_RESET interrupts");
+    expect(clock_until(h, nullptr, true, false, 20000, [&] { return h.pix_offered(); }, false),
+           "a pixel waiting on m_pix before SOFT_RESET");
     expect_eq(h.lite_write(RPU_AXI_CTRL, RPU_AXI_CTRL_SOFT_RESET_MASK), 0, "SOFT_RESET, pixel held");
-    for (int k = 0; k < 8; ++k) {  // past the soft reset's 4 cycles, the pixel still held
-      h.drive(nullptr, true, false);
-      expect(h.pix_offered(), "the held pixel withdrawn by SOFT_RESET");
-      h.tick();
-    }
-    bool left = false;
-    for (int k = 0; k < 100 && !left; ++k) {
-      h.drive(nullptr, true, true);
-      left = h.pix_valid();
-      h.tick();
-    }
-    expect(left, "the held pixel handed out after SOFT_RESET");
+    // Past the soft reset's 4 cycles, the pixel still held; then taken.
+    expect(!clock_until(h, nullptr, true, false, 8, [&] { return !h.pix_offered(); }, false),
+           "the held pixel withdrawn by SOFT_RESET");
+    expect(clock_until(h, nullptr, true, true, 100, [&] { return h.pix_valid(); }),
+           "the held pixel handed out after SOFT_RESET");
     expect_eq(h.read(RPU_AXI_PIXELS_OUT), 0, "PIXELS_OUT after the held pixel left");
   }
   // The whole frame after all that, the descriptors as loaded at the start.
@@ -303,45 +282,31 @@ void host(AxiHost& h, const sim::FrameSchedule& f, const ref::ModelScene& m,
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string mode = "frame", scene_name = "curve12", config = "n16_n1_2_iterative_axi";
-  int size = 16;
-  for (int a = 1; a < argc; ++a) {
-    const std::string s = argv[a];
-    if (s == "--scene" && a + 1 < argc) scene_name = argv[++a];
-    else if (s == "--size" && a + 1 < argc) size = std::atoi(argv[++a]);
-    else if (s == "--config" && a + 1 < argc) config = argv[++a];
-    else mode = s;
-  }
-  const sim::RtlConfig* cfg = nullptr;
-  for (const auto& c : sim::rtl_configs())
-    if (c.name == config && c.axi) cfg = &c;
-  if (!cfg) {
-    std::printf("FAILURE: no AXI configuration %s in this build\n", config.c_str());
-    return 1;
-  }
+  sim::TopBench b;
+  b.config = "n16_n1_2_iterative_axi";
+  b.size = 16;
+  if (!sim::top_bench(argc, argv, true, b)) return 1;
   const std::uint64_t seed = sim::test_seed("tb_rpu_axi");
-  scene::Scene scn = sim::merged_demo_scene(scene_name);
-  scn.camera.width = size;
-  scn.camera.height = size;
-  const scene::CompiledScene sc = scene::compile_scene(scn);
-  const ref::ModelScene m = ref::quantize_scene(sc, cfg->params);
-  const sim::FrameSchedule f = sim::schedule_frame(sc, m, ref::RefOptions{});
+  const std::string& mode = b.mode;
+  const sim::RtlConfig* cfg = b.cfg;
+  const ref::ModelScene& m = b.model;
+  const sim::FrameSchedule& f = b.frame;
   sim::CosimOptions o;
   o.seed = seed;
   o.valid_pct = 70;
   o.res_ready_pct = 60;
   o.pix_ready_pct = 50;
   o.stall_phases = true;
-  auto ports = cfg->make(0);
+  auto ports = cfg->make(b.x_seed);
   auto* h = dynamic_cast<AxiHost*>(ports.get());
   if (!h) {
-    std::printf("FAILURE: %s is not an AXI configuration\n", config.c_str());
+    std::printf("FAILURE: %s is not an AXI configuration\n", cfg->name.c_str());
     return 1;
   }
   try {
     if (mode == "frame") {
-      frame(*h, f, m, o, fmt::format("rpu_axi frame ({}, {} {}x{})", cfg->name, scene_name, size,
-                                     size).c_str());
+      frame(*h, f, m, o, fmt::format("rpu_axi frame ({}, {} {}x{})", cfg->name, b.scene, b.size,
+                                     b.size).c_str());
     } else if (mode == "host") {
       host(*h, f, m, o);
     } else {

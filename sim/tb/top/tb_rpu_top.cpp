@@ -45,31 +45,16 @@ sim::FrameSchedule repeat_items(const sim::FrameSchedule& f, std::size_t count) 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string mode = "frame", scene_name = "curve12", config = "n16_n1_2_unrolled";
-  int size = 64;
-  std::uint64_t x_seed = 0;
-  for (int a = 1; a < argc; ++a) {
-    const std::string s = argv[a];
-    if (s == "--scene" && a + 1 < argc) scene_name = argv[++a];
-    else if (s == "--size" && a + 1 < argc) size = std::atoi(argv[++a]);
-    else if (s == "--x-seed" && a + 1 < argc) x_seed = std::strtoull(argv[++a], nullptr, 0);
-    else if (s == "--config" && a + 1 < argc) config = argv[++a];
-    else mode = s;
-  }
-  const sim::RtlConfig* cfg = nullptr;
-  for (const auto& c : sim::rtl_configs())
-    if (c.name == config) cfg = &c;
-  if (!cfg) {
-    std::printf("FAILURE: no configuration %s in this build\n", config.c_str());
-    return 1;
-  }
+  sim::TopBench b;
+  b.config = "n16_n1_2_unrolled";
+  if (!sim::top_bench(argc, argv, false, b)) return 1;
   const std::uint64_t seed = sim::test_seed("tb_rpu_top");
-  scene::Scene scn = sim::merged_demo_scene(scene_name);
-  scn.camera.width = size;
-  scn.camera.height = size;
-  const scene::CompiledScene sc = scene::compile_scene(scn);
-  const ref::ModelScene m = ref::quantize_scene(sc, cfg->params);
-  sim::FrameSchedule f = sim::schedule_frame(sc, m, ref::RefOptions{});
+  const std::string& mode = b.mode;
+  const std::string& scene_name = b.scene;
+  const int size = b.size;
+  const sim::RtlConfig* cfg = b.cfg;
+  const ref::ModelScene& m = b.model;
+  sim::FrameSchedule f = b.frame;
   if (mode == "throughput") f = repeat_items(f, 10000);
 
   sim::CosimOptions o;
@@ -84,7 +69,7 @@ int main(int argc, char** argv) {
     std::printf("FAILURE: unknown mode %s\n", mode.c_str());
     return 1;
   }
-  auto top = cfg->make(x_seed);
+  auto top = cfg->make(b.x_seed);
   sim::Scoreboard sb(f, m, 4);
   const sim::CosimStats st = sim::cosim_frame(*top, f, sb, o);
   for (const auto& r : sb.reports()) std::printf("FAILURE %s\n", r.c_str());
