@@ -14,6 +14,7 @@
 #include "common/error.h"
 #include "model/hw_params.h"
 #include "report_text.h"
+#include "sweep_process.h"
 
 namespace rpu::app {
 
@@ -125,83 +126,7 @@ std::vector<Candidate> pareto_candidates(const std::vector<const json*>& rows) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Axes
-
-// A linear axis from lo to hi (lo < hi) with ticks at multiples of a nice step.
-struct Axis {
-  double lo = 0, hi = 1;
-  std::vector<double> ticks;
-  int decimals = 0;  // for the tick labels
-
-  // Halved first, so that ends near ±1e308 do not overflow to inf - inf.
-  double fraction(double v) const { return (0.5 * v - 0.5 * lo) / (0.5 * hi - 0.5 * lo); }
-  std::string label(double v) const {
-    if (std::abs(v) < 1e-9 * (hi - lo)) v = 0;  // no "-0"
-    return fmt::format("{:.{}f}", v, decimals);
-  }
-};
-
-// 1, 2, 2.5 or 5 × 10^k, so that span holds about `target` steps.
-double nice_step(double span, int target) {
-  const double raw = span / target;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  const double f = raw / magnitude;
-  const double m = f <= 1 ? 1 : f <= 2 ? 2 : f <= 2.5 ? 2.5 : f <= 5 ? 5 : 10;
-  return m * magnitude;
-}
-
-// The decimals a tick label needs to show multiples of step exactly.
-int decimals_of(double step) {
-  for (int d = 0; d < 12; ++d) {
-    const double scaled = step * std::pow(10.0, d);
-    if (std::abs(scaled - std::round(scaled)) < 1e-6 * std::max(1.0, scaled)) return d;
-  }
-  return 12;
-}
-
-// The axis over values: rounded out to whole steps, through zero when from_zero, with whole-number
-// steps when integral. An empty set gives [0, 1]; equal values a range around them that does not
-// go below zero when they do not.
-Axis make_axis(const std::vector<double>& values, bool from_zero, bool integral) {
-  double lo = values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
-  double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
-  if (from_zero) {
-    lo = std::min(lo, 0.0);
-    hi = std::max(hi, 0.0);
-  }
-  const double scale = std::max(std::abs(lo), std::abs(hi));
-  if (hi - lo <= scale * 1e-9) {
-    double pad = scale == 0 ? 1.0 : 0.1 * scale;
-    if (integral) pad = std::max(pad, 1.0);
-    const bool non_negative = lo >= 0;
-    lo -= pad;
-    hi += pad;
-    if (non_negative) lo = std::max(lo, 0.0);  // LUTs, cycles, widths: never below zero
-  }
-  Axis axis;
-  double step = nice_step(hi - lo, 5);
-  if (integral && step != std::floor(step)) step = step < 1 ? 1.0 : 2 * step;  // 2.5 → 5
-  const double first = std::floor(lo / step) * step;
-  const double last = std::ceil(hi / step) * step;
-  const double count = std::round((last - first) / step);
-  if (!std::isfinite(step) || !std::isfinite(first) || !std::isfinite(last) || !(count >= 1) ||
-      count > 100) {
-    // Beyond double's reach (values near ±1e308): the data's own ends, unrounded.
-    axis.lo = std::isfinite(lo) ? lo : -1.0;
-    axis.hi = std::isfinite(hi) && hi > axis.lo ? hi : axis.lo + 1.0;
-    axis.ticks = {axis.lo, axis.hi};
-    axis.decimals = 0;
-    return axis;
-  }
-  axis.lo = first;
-  axis.hi = last;
-  for (int i = 0; i <= static_cast<int>(count); ++i) axis.ticks.push_back(first + i * step);
-  axis.decimals = decimals_of(step);
-  return axis;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Figures and their SVG
+// Figures: what is plotted (scripts/sweep_plots.py draws it with matplotlib)
 
 
 struct Point {
@@ -228,7 +153,6 @@ struct Panel {
 
 struct Figure {
   std::string title, x_label;
-  std::string no_data;  // why a panel without points is empty
   bool share_y = false;
   std::vector<Panel> panels;
 };
@@ -240,155 +164,25 @@ constexpr std::string_view kDashes[] = {"", "6 3", "2 2", "8 3 2 3"};
 constexpr std::string_view kParetoColour = "#d62728";
 constexpr std::string_view kPointColour = "#4e79a7";
 
-// The layout, in SVG user units (pixels).
-constexpr double kWidth = 900;
-constexpr double kPlotLeft = 90;     // room for the y tick labels and the y label
-constexpr double kPlotWidth = 540;
-constexpr double kLegendLeft = kPlotLeft + kPlotWidth + 30;
-constexpr double kTop = 44;          // the figure title
-constexpr double kPanelTitle = 24;
-constexpr double kPlotHeight = 260;
-constexpr double kPanelBelow = 56;   // x tick labels and the x label
-constexpr double kPanelHeight = kPanelTitle + kPlotHeight + kPanelBelow;
-constexpr double kLegendRow = 18;
-
-std::string coord(double v) { return fmt::format("{:.2f}", v); }
-
-void append_values(const Panel& p, bool x, std::vector<double>& out) {
-  for (const Series& s : p.series)
-    for (const Point& q : s.points) out.push_back(x ? q.x : q.y);
-}
-
-// One panel whose plot area's top left corner is (left, top).
-std::string svg_panel(const Panel& panel, const Axis& x_axis, const Axis* shared_y,
-                      const Figure& figure, double top) {
-  std::string svg = fmt::format("<g class=\"panel\">\n<text x=\"{}\" y=\"{}\" font-size=\"14\" "
-                                "font-weight=\"bold\">{}</text>\n",
-                                coord(kPlotLeft), coord(top - 8), escape_html(panel.title));
-  const double left = kPlotLeft, bottom = top + kPlotHeight, right = kPlotLeft + kPlotWidth;
-  size_t point_count = 0;
-  for (const Series& s : panel.series) point_count += s.points.size();
-  if (point_count == 0) {
-    svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#f6f6f6\" "
-                       "stroke=\"#999\"/>\n<text class=\"no-data\" x=\"{}\" y=\"{}\" "
-                       "text-anchor=\"middle\" fill=\"#666\">no data: {}</text>\n</g>\n",
-                       coord(left), coord(top), coord(kPlotWidth), coord(kPlotHeight),
-                       coord(left + kPlotWidth / 2), coord(top + kPlotHeight / 2),
-                       escape_html(figure.no_data));
-    return svg;
+// A figure as the plot data scripts/sweep_plots.py draws (its file name, titles, panels, and every
+// series with its style and points).
+json figure_json(std::string_view file, const Figure& f) {
+  json panels = json::array();
+  for (const Panel& p : f.panels) {
+    json series = json::array();
+    for (const Series& s : p.series) {
+      json points = json::array();
+      for (const Point& q : s.points)
+        points.push_back({{"x", q.x}, {"y", q.y}, {"label", q.label}, {"tooltip", q.tooltip}});
+      series.push_back({{"name", s.name}, {"colour", s.colour}, {"dash", s.dash},
+                        {"line", s.line}, {"highlighted", s.highlighted}, {"radius", s.radius},
+                        {"points", std::move(points)}});
+    }
+    panels.push_back({{"title", p.title}, {"y_label", p.y_label}, {"y_from_zero", p.y_from_zero},
+                      {"series", std::move(series)}});
   }
-
-  std::vector<double> ys;
-  append_values(panel, false, ys);
-  const Axis y_axis = shared_y ? *shared_y : make_axis(ys, panel.y_from_zero, /*integral=*/true);
-  const auto px = [&](double x) { return left + x_axis.fraction(x) * kPlotWidth; };
-  const auto py = [&](double y) { return bottom - y_axis.fraction(y) * kPlotHeight; };
-
-  // Grid, ticks and their labels.
-  svg += "<g class=\"grid\" stroke=\"#e3e3e3\">\n";
-  for (double t : x_axis.ticks)
-    svg += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\"/>\n", coord(px(t)),
-                       coord(top), coord(bottom));
-  for (double t : y_axis.ticks)
-    svg += fmt::format("<line x1=\"{1}\" y1=\"{0}\" x2=\"{2}\" y2=\"{0}\"/>\n", coord(py(t)),
-                       coord(left), coord(right));
-  svg += "</g>\n";
-  svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
-                     "stroke=\"#444\"/>\n",
-                     coord(left), coord(top), coord(kPlotWidth), coord(kPlotHeight));
-  for (double t : x_axis.ticks)
-    svg += fmt::format("<text class=\"x-tick\" x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                       coord(px(t)), coord(bottom + 16), escape_html(x_axis.label(t)));
-  for (double t : y_axis.ticks)
-    svg += fmt::format("<text class=\"y-tick\" x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n",
-                       coord(left - 6), coord(py(t) + 4), escape_html(y_axis.label(t)));
-  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                     coord(left + kPlotWidth / 2), coord(bottom + 40), escape_html(figure.x_label));
-  svg += fmt::format("<text x=\"{0}\" y=\"{1}\" text-anchor=\"middle\" "
-                     "transform=\"rotate(-90 {0} {1})\">{2}</text>\n",
-                     coord(left - 70), coord(top + kPlotHeight / 2), escape_html(panel.y_label));
-
-  // Lines under the points, labels on top.
-  for (const Series& s : panel.series) {
-    if (!s.line || s.points.size() < 2) continue;
-    std::vector<Point> sorted = s.points;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const Point& a, const Point& b) {
-      return a.x != b.x ? a.x < b.x : a.y < b.y;
-    });
-    std::string points;
-    for (const Point& q : sorted)
-      points += fmt::format("{}{},{}", points.empty() ? "" : " ", coord(px(q.x)), coord(py(q.y)));
-    svg += fmt::format("<polyline class=\"{}\" points=\"{}\" fill=\"none\" stroke=\"{}\" "
-                       "stroke-width=\"{}\"{}/>\n",
-                       s.highlighted ? "pareto" : "series", points, s.colour,
-                       s.highlighted ? "2.5" : "1.5",
-                       s.dash.empty() ? "" : fmt::format(" stroke-dasharray=\"{}\"", s.dash));
-  }
-  for (const Series& s : panel.series)
-    for (const Point& q : s.points)
-      svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"#222\" "
-                         "stroke-width=\"0.5\"><title>{}</title></circle>\n",
-                         coord(px(q.x)), coord(py(q.y)), s.radius, s.colour, escape_html(q.tooltip));
-  for (const Series& s : panel.series)
-    for (const Point& q : s.points)
-      if (!q.label.empty())
-        svg += fmt::format("<text class=\"point-label\" x=\"{}\" y=\"{}\" font-size=\"10\" "
-                           "fill=\"#333\">{}</text>\n",
-                           coord(px(q.x) + 5), coord(py(q.y) - 5), escape_html(q.label));
-  return svg + "</g>\n";
-}
-
-// The legend: one row per distinct series name, a line (when the series has one) and a square
-// marker, so that <circle> stays one per plotted point.
-std::string svg_legend(const Figure& figure, size_t& rows) {
-  std::vector<const Series*> entries;
-  for (const Panel& p : figure.panels)
-    for (const Series& s : p.series)
-      if (std::none_of(entries.begin(), entries.end(), [&](const Series* e) { return e->name == s.name; }))
-        entries.push_back(&s);
-  rows = entries.size();
-  std::string svg = "<g class=\"legend\">\n";
-  double y = kTop + kPanelTitle;
-  for (const Series* s : entries) {
-    if (s->line)
-      svg += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" "
-                         "stroke-width=\"2\"{}/>\n",
-                         coord(kLegendLeft), coord(y), coord(kLegendLeft + 24), coord(y), s->colour,
-                         s->dash.empty() ? "" : fmt::format(" stroke-dasharray=\"{}\"", s->dash));
-    svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"8\" height=\"8\" fill=\"{}\" stroke=\"#222\" "
-                       "stroke-width=\"0.5\"/>\n<text x=\"{}\" y=\"{}\">{}</text>\n",
-                       coord(kLegendLeft + 8), coord(y - 4), s->colour, coord(kLegendLeft + 32),
-                       coord(y + 4), escape_html(s->name));
-    y += kLegendRow;
-  }
-  return svg + "</g>\n";
-}
-
-std::string svg_figure(const Figure& figure) {
-  std::vector<double> xs, ys;
-  for (const Panel& p : figure.panels) {
-    append_values(p, true, xs);
-    append_values(p, false, ys);
-  }
-  const Axis x_axis = make_axis(xs, /*from_zero=*/false, /*integral=*/true);
-  const bool from_zero = std::any_of(figure.panels.begin(), figure.panels.end(),
-                                     [](const Panel& p) { return p.y_from_zero; });
-  const Axis shared_y = make_axis(ys, from_zero, /*integral=*/true);
-
-  size_t legend_rows = 0;
-  const std::string legend = svg_legend(figure, legend_rows);
-  const double height = std::max(kTop + figure.panels.size() * kPanelHeight + 8,
-                                 kTop + kPanelTitle + legend_rows * kLegendRow + 16);
-  std::string svg = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
-      "viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      "<title>{2}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n"
-      "<text x=\"{3}\" y=\"24\" font-size=\"16\" font-weight=\"bold\">{2}</text>\n",
-      kWidth, height, escape_html(figure.title), coord(kPlotLeft));
-  for (size_t k = 0; k < figure.panels.size(); ++k)
-    svg += svg_panel(figure.panels[k], x_axis, figure.share_y ? &shared_y : nullptr, figure,
-                     kTop + k * kPanelHeight + kPanelTitle);
-  return svg + legend + "</svg>\n";
+  return {{"file", file}, {"title", f.title}, {"x_label", f.x_label}, {"share_y", f.share_y},
+          {"panels", std::move(panels)}};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -499,8 +293,7 @@ Figure accuracy_vs_luts(const std::vector<const json*>& rows, const std::vector<
                            point_tooltip(row, r, "LUT sites", *luts, "mismatched pixels", *mismatches) +
                                (on_front ? " (Pareto front)" : "")});
   }
-  Figure figure{title + ": accuracy vs LUT sites", "LUT sites",
-                "no ok configuration has both LUT sites and ref_vs_float_total", false, {}};
+  Figure figure{title + ": accuracy vs LUT sites", "LUT sites", false, {}};
   Panel panel{"mismatched pixels (ref vs float, all scenes) against LUT sites",
               "mismatched pixels", true, {}};
   if (!others.points.empty()) panel.series.push_back(std::move(others));
@@ -513,8 +306,7 @@ Figure luts_latency_vs_n1(const std::vector<const json*>& rows, const std::strin
   return line_figure(rows, "n1", {"n"},
                      {{"lut_sites", "LUT sites against n1", "LUT sites"},
                       {"rtl_latency_cycles", "latency against n1", "latency (cycles)"}},
-                     {title + ": LUT sites and latency vs n1", "n1",
-                      "no ok configuration has this measurement", false, {}},
+                     {title + ": LUT sites and latency vs n1", "n1", false, {}},
                      /*y_from_zero=*/false);
 }
 
@@ -523,8 +315,7 @@ Figure mismatches_vs_coord_w(const std::vector<const json*>& rows, const std::st
                      {{"ref_vs_float_total", "ref vs float (double precision, ideal semantics)", "mismatched pixels"},
                       {"ref_vs_float_ip_total", "ref vs float-ip (double precision, the iterative process)",
                        "mismatched pixels"}},
-                     {title + ": mismatched pixels vs coord_w", "coord_w",
-                      "no ok configuration has this measurement", true, {}},
+                     {title + ": mismatched pixels vs coord_w", "coord_w", true, {}},
                      /*y_from_zero=*/true);
 }
 
@@ -674,6 +465,23 @@ std::string index_html(const std::vector<const json*>& rows, const std::vector<C
 }
 
 
+// The script that draws the plots with matplotlib, run by /usr/bin/python3 (Debian's, which has
+// python3-matplotlib; scripts/setup.sh installs it), on the plot data.
+constexpr std::string_view kSweepPlotsScript = RPU_SOURCE_DIR "/scripts/sweep_plots.py";
+
+void draw_plots(const fs::path& data, const fs::path& dir) {
+  const fs::path log = dir / "plots.log";
+  const int status = run_child({"/usr/bin/python3", std::string(kSweepPlotsScript), data.string(),
+                                dir.string()},
+                               {"", log.string()});
+  if (status != 0)
+    throw Error(std::string(kSweepPlotsScript),
+                fmt::format("drawing the sweep's plots failed (exit {}; {}); it needs "
+                            "/usr/bin/python3 with python3-matplotlib (scripts/setup.sh)",
+                            status, log.string()));
+  fs::remove(log);
+}
+
 }  // namespace
 
 std::vector<std::string> pareto_front(const nlohmann::json& rows) {
@@ -699,25 +507,35 @@ SweepPlots write_sweep_report(const nlohmann::json& rows, const std::string& out
     write_text_file(path, text);
     plots.files.push_back(path.string());
   };
-  // A figure is written only with data: its empty panels are dropped, and a figure left with no
-  // panel is not written (a sweep without Yosys has no LUTs), and its file from an earlier run
+  // A figure is drawn only with data: its empty panels are dropped, and a figure left with no
+  // panel is not drawn (a sweep without Yosys has no LUTs), and its file from an earlier run
   // into this directory is removed, so index.html never shows an empty or stale plot.
   std::vector<std::string_view> plotted;
+  json figures = json::array();
   const auto plot = [&](std::string_view name, Figure figure) {
     std::erase_if(figure.panels, [](const Panel& p) {
       return std::all_of(p.series.begin(), p.series.end(),
                          [](const Series& s) { return s.points.empty(); });
     });
-    if (figure.panels.empty()) {
-      fs::remove(dir / name, ec);
-      return;
-    }
-    write(name, svg_figure(figure));
+    fs::remove(dir / name, ec);
+    if (figure.panels.empty()) return;
+    figures.push_back(figure_json(name, figure));
     plotted.push_back(name);
   };
   plot(kAccuracyVsLutsSvg, accuracy_vs_luts(list, front, title));
   plot(kLutsLatencyVsN1Svg, luts_latency_vs_n1(list, title));
   plot(kMismatchesVsCoordWSvg, mismatches_vs_coord_w(list, title));
+  const fs::path data = dir / kSweepPlotsJson;
+  // Texts come from the sweep's file and rows (a title, a config_id): bytes that are not UTF-8
+  // become U+FFFD in the plot data, as a browser would show them.
+  write_text_file(data, json{{"figures", figures}}.dump(1, ' ', false,
+                                                        json::error_handler_t::replace) + "\n");
+  if (!plotted.empty()) draw_plots(data, dir);
+  for (std::string_view name : plotted) {
+    if (!fs::is_regular_file(dir / name))
+      throw Error((dir / name).string(), "was not drawn by " + std::string(kSweepPlotsScript));
+    plots.files.push_back((dir / name).string());
+  }
   write(kSweepIndexHtml, index_html(list, front, plotted, title));
   return plots;
 }

@@ -34,15 +34,17 @@ inline constexpr std::string_view kAccuracyVsLutsSvg = "accuracy_vs_luts.svg";
 inline constexpr std::string_view kLutsLatencyVsN1Svg = "luts_latency_vs_n1.svg";
 inline constexpr std::string_view kMismatchesVsCoordWSvg = "mismatches_vs_coord_w.svg";
 inline constexpr std::string_view kSweepIndexHtml = "index.html";
+inline constexpr std::string_view kSweepPlotsJson = "plots.json";  // what the plots show
 
 struct SweepPlots {
   std::vector<std::string> files;       // the paths written (out_dir/<name>), SVGs then index.html
   std::vector<std::string> pareto_ids;  // pareto_front(rows)
 };
 
-// Writes into out_dir (created if missing), every plot on linear axes with nice ticks
-// (1, 2, 2.5 or 5 × 10^k), one SVG <circle> per plotted point (legends use other shapes), each
-// with a <title> tooltip naming its configuration:
+// Writes into out_dir (created if missing) plots.json, the data of every plot (its series, styles
+// and points with their labels and tooltips), and the plots drawn from it by matplotlib
+// (scripts/sweep_plots.py): linear axes, one SVG element per plotted point with a <title>
+// tooltip naming its configuration:
 //   accuracy_vs_luts.svg: x LUTs ("lut"), y ref_vs_float_total; a point per ok row with both,
 //     labelled "n/n1" (+ " iterative"); the Pareto front (pareto_front) drawn as a highlighted
 //     line through its points in LUT order.
@@ -55,10 +57,9 @@ struct SweepPlots {
 //     results.csv and results.json, which the caller writes next to it. Its title is
 //     "rpu sweep: <title>".
 // A panel without data is left out of its plot, and a plot without any is not written (its file
-// from an earlier run in out_dir is removed): a sweep without Yosys has no LUT plots. A panel of
-// a written plot that has no points of its own while another has (never the case after the
-// filtering above) would carry a "no data" note. Throws rpu::Error naming the path on I/O
-// failure, and naming "sweep results" when rows is neither an array nor null (null: no rows).
+// from an earlier run in out_dir is removed): a sweep without Yosys has no LUT plots. Throws
+// rpu::Error naming the path on I/O failure, naming the script when it cannot draw (no
+// matplotlib), and naming "sweep results" when rows is neither an array nor null (null: no rows).
 SweepPlots write_sweep_report(const nlohmann::json& rows, const std::string& out_dir,
                               const std::string& title);
 

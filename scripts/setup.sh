@@ -8,7 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libopenimageio-dev openimageio-tools
   verilator libsystemc-dev yosys z3 cvc5 clang libclang-rt-14-dev
-  parallel python3
+  parallel python3 python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,7 @@
-// The report of `rpu sweep`: the Pareto front of hand-made rows, one SVG circle per plotted point
-// and one line per series in well-formed SVG, "no data" plots for an empty sweep, escaped text in
-// index.html, and failures that name the path.
+// The report of `rpu sweep`: the Pareto front of hand-made rows; the plot data (plots.json: every
+// point, series and line) and the SVGs matplotlib draws from it (scripts/sweep_plots.py: well-
+// formed, one element per point with its tooltip, the labels and legend as text); no plots for
+// an empty sweep; escaped text in index.html and the SVGs; failures that name the path.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "common/error.h"
 #include "report_text.h"
@@ -19,8 +22,19 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// Per process (two checkouts' suites may run at once on one machine), removed at exit.
+fs::path scratch() {
+  return fs::temp_directory_path() / ("rpu_test_sweep_report_" + std::to_string(::getpid()));
+}
+struct RemoveScratch {
+  ~RemoveScratch() {
+    std::error_code ec;
+    fs::remove_all(scratch(), ec);
+  }
+} remove_scratch;
+
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "rpu_test_sweep_report" / name;
+  const fs::path dir = scratch() / name;
   fs::remove_all(dir);
   return dir;
 }
@@ -38,12 +52,14 @@ size_t count_of(const std::string& text, const std::string& what) {
   return n;
 }
 
-// The problem with an SVG as the XML subset the report writes, or "" when there is none: one
-// <svg> root element, tags that close in order, quoted attributes, no raw '<' or '>' in text,
-// and every '&' starting one of the entities the report writes.
-std::string svg_problem(const std::string& s) {
+// The problem with an SVG as the XML subset the report writes, or "" when there is none: an XML
+// declaration, then one <svg> root element, tags that close in order, quoted attributes, no raw
+// '<' or '>' in text, and every '&' starting an entity.
+std::string svg_problem(std::string s) {
+  if (s.rfind("<?xml", 0) == 0) s = s.substr(s.find("?>") + 2);
+  s.erase(0, s.find_first_not_of(" \n"));
   if (s.rfind("<svg", 0) != 0) return "does not start with <svg";
-  static const std::regex entity("^&(amp|lt|gt|quot|#39);");
+  static const std::regex entity("^&(amp|lt|gt|quot|#[0-9]+);");
   for (size_t at = s.find('&'); at != std::string::npos; at = s.find('&', at + 1))
     if (!std::regex_search(s.substr(at, 8), entity)) return "bare '&' at " + std::to_string(at);
   std::vector<std::string> open;
@@ -72,6 +88,30 @@ std::string svg_problem(const std::string& s) {
     i = end + 1;
   }
   return open.empty() ? "" : "unclosed <" + open.back() + ">";
+}
+
+// The plot data of a report (plots.json) and one figure of it by file name.
+json plot_data(const fs::path& dir) { return json::parse(read_text(dir / "plots.json")); }
+json figure(const fs::path& dir, const std::string& file) {
+  const json data = plot_data(dir);
+  for (const json& f : data.at("figures"))
+    if (f.at("file") == file) return f;
+  ADD_FAILURE() << "no figure " << file << " in plots.json";
+  return json::object();
+}
+// Its points, and its series drawn as a line (of two points or more; the Pareto front aside).
+size_t point_count(const json& f) {
+  size_t n = 0;
+  for (const json& p : f.value("panels", json::array()))
+    for (const json& s : p.at("series")) n += s.at("points").size();
+  return n;
+}
+size_t line_count(const json& f) {
+  size_t n = 0;
+  for (const json& p : f.value("panels", json::array()))
+    for (const json& s : p.at("series"))
+      n += s.at("line").get<bool>() && !s.at("highlighted").get<bool>() && s.at("points").size() > 1;
+  return n;
 }
 
 // One ok row of the sweep; null measurements are written as JSON null.
@@ -167,7 +207,7 @@ TEST(ParetoFront, SmallAndDegenerateSets) {
   EXPECT_THROW(pareto_front(json{{"config_id", "not an array"}}), rpu::Error);
 }
 
-TEST(SweepReport, WritesWellFormedSvgWithOneCirclePerPoint) {
+TEST(SweepReport, DrawsEveryPointWithItsTooltip) {
   const fs::path dir = fresh_dir("files");
   const SweepPlots plots = write_sweep_report(sweep_rows(), dir.string(), "widths");
   const std::vector<std::string> files = {
@@ -184,36 +224,34 @@ TEST(SweepReport, WritesWellFormedSvgWithOneCirclePerPoint) {
       {"luts_latency_vs_n1.svg", {14, 6}},
       {"mismatches_vs_coord_w.svg", {15, 7}}};
   for (const auto& [file, counts] : expected) {
+    const json f = figure(dir, file);
+    EXPECT_EQ(point_count(f), counts.first) << file;
+    EXPECT_EQ(line_count(f), counts.second) << file;
     ASSERT_TRUE(fs::exists(dir / file)) << file;
     const std::string svg = read_text(dir / file);
     EXPECT_EQ(svg_problem(svg), "") << file;
-    EXPECT_EQ(count_of(svg, "<circle"), counts.first) << file;
-    EXPECT_EQ(count_of(svg, "<polyline class=\"series\""), counts.second) << file;
-    EXPECT_EQ(svg.find("no data"), std::string::npos) << file;
-    EXPECT_FALSE(std::regex_search(svg, std::regex("[\",= ]-?(nan|inf)", std::regex::icase))) << file;
+    EXPECT_EQ(count_of(svg, "id=\"point-"), counts.first) << file;  // one element per point
+    EXPECT_EQ(count_of(svg, "<title>"), counts.first) << file;       // each with its tooltip
+    EXPECT_EQ(count_of(svg, "id=\"series"), counts.second) << file;
+    EXPECT_FALSE(std::regex_search(svg, std::regex("[\",= ]-?(nan|inf)[\" ,<]", std::regex::icase))) << file;
   }
 
   // The Pareto front is one highlighted line through its four points, in LUT order.
-  const std::string accuracy = read_text(dir / "accuracy_vs_luts.svg");
-  ASSERT_EQ(count_of(accuracy, "<polyline class=\"pareto\""), 1u);
-  std::smatch m;
-  ASSERT_TRUE(std::regex_search(accuracy, m, std::regex("<polyline class=\"pareto\" points=\"([^\"]*)\"")));
-  const std::string points = m[1];
-  EXPECT_EQ(std::count(points.begin(), points.end(), ','), 4);
+  const json accuracy_data = figure(dir, "accuracy_vs_luts.svg");
+  const json& pareto = accuracy_data.at("panels").at(0).at("series").back();
+  EXPECT_EQ(pareto.at("name"), "Pareto front");
+  EXPECT_TRUE(pareto.at("highlighted").get<bool>());
   std::vector<double> xs;
-  const std::regex x_of_point("([0-9.]+),");
-  for (std::sregex_iterator it(points.begin(), points.end(), x_of_point), end; it != end; ++it)
-    xs.push_back(std::stod((*it)[1]));
-  EXPECT_TRUE(std::is_sorted(xs.begin(), xs.end()));
+  for (const json& q : pareto.at("points")) xs.push_back(q.at("x").get<double>());
+  EXPECT_EQ(xs, (std::vector<double>{1000, 1200, 1800, 2600}));
+  const std::string accuracy = read_text(dir / "accuracy_vs_luts.svg");
+  EXPECT_EQ(count_of(accuracy, "id=\"pareto\""), 1u);
   EXPECT_NE(accuracy.find(">16/4</text>"), std::string::npos);
   EXPECT_NE(accuracy.find(">24/8</text>"), std::string::npos);
-  EXPECT_NE(accuracy.find("c5: LUT sites 1800, mismatched pixels 100 (Pareto front)"), std::string::npos);
-  // LUTs 1000 … 2600 on nice ticks of 500 from 1000 to 3000; mismatches 0 … 900 by 200.
-  for (const char* tick : {">1000<", ">1500<", ">3000<", ">0<", ">200<", ">800<"})
-    EXPECT_NE(accuracy.find(tick), std::string::npos) << tick;
-  EXPECT_EQ(accuracy.find(">1200<"), std::string::npos);
+  EXPECT_NE(accuracy.find("<title>c5: LUT sites 1800, mismatched pixels 100 (Pareto front)</title>"),
+            std::string::npos);
 
-  // The line figures name their series by n and the other swept parameter.
+  // The line figures name their series by n and the other swept parameter (the legend).
   const std::string luts = read_text(dir / "luts_latency_vs_n1.svg");
   EXPECT_NE(luts.find(">n=16, coord_w=12</text>"), std::string::npos);
   EXPECT_NE(luts.find(">n=24, coord_w=16</text>"), std::string::npos);
@@ -238,24 +276,27 @@ TEST(SweepReport, OneLinePerNWhenOnlyNAndN1Vary) {
       rows.push_back(ok_row(config_id(n, n1), n, n1, 16, 100 * n + 10 * n1, 50 - n1, 40 - n1, n1 + 8));
   const fs::path dir = fresh_dir("per_n");
   write_sweep_report(rows, dir.string(), "n1");
+  const json f = figure(dir, "luts_latency_vs_n1.svg");
+  EXPECT_EQ(point_count(f), 12u);
+  // Two lines per panel, three points each; legend rows n=16 and n=24 only.
+  EXPECT_EQ(line_count(f), 4u);
+  for (const json& p : f.at("panels"))
+    for (const json& s : p.at("series")) EXPECT_EQ(s.at("points").size(), 3u) << s.at("name");
   const std::string svg = read_text(dir / "luts_latency_vs_n1.svg");
   EXPECT_EQ(svg_problem(svg), "");
-  EXPECT_EQ(count_of(svg, "<circle"), 12u);
-  // Two lines per panel, three points each; legend rows n=16 and n=24 only.
-  EXPECT_EQ(count_of(svg, "<polyline class=\"series\""), 4u);
-  const std::regex series_points("<polyline class=\"series\" points=\"([^\"]*)\"");
-  for (std::sregex_iterator it(svg.begin(), svg.end(), series_points), end; it != end; ++it) {
-    const std::string points = (*it)[1];
-    EXPECT_EQ(std::count(points.begin(), points.end(), ','), 3) << points;
-  }
+  EXPECT_EQ(count_of(svg, "id=\"point-"), 12u);
+  EXPECT_EQ(count_of(svg, "id=\"series"), 4u);
   EXPECT_NE(svg.find(">n=16</text>"), std::string::npos);
   EXPECT_NE(svg.find(">n=24</text>"), std::string::npos);
   EXPECT_EQ(svg.find("coord_w="), std::string::npos);
   // One coord_w only: one point per (n, n1), no lines.
+  const json w = figure(dir, "mismatches_vs_coord_w.svg");
+  EXPECT_EQ(point_count(w), 12u);
+  EXPECT_EQ(line_count(w), 0u);
   const std::string widths = read_text(dir / "mismatches_vs_coord_w.svg");
   EXPECT_EQ(svg_problem(widths), "");
-  EXPECT_EQ(count_of(widths, "<circle"), 12u);
-  EXPECT_EQ(count_of(widths, "<polyline"), 0u);
+  EXPECT_EQ(count_of(widths, "id=\"point-"), 12u);
+  EXPECT_EQ(count_of(widths, "id=\"series"), 0u);
 }
 
 TEST(SweepReport, EmptySweepWritesNoPlots) {
@@ -299,7 +340,7 @@ TEST(SweepReport, PlotsWithoutDataAreLeftOut) {
   EXPECT_EQ(svg_problem(n1), "");
   EXPECT_EQ(n1.find("LUT sites against n1"), std::string::npos);
   EXPECT_NE(n1.find("latency against n1"), std::string::npos);
-  EXPECT_EQ(n1.find("no data"), std::string::npos);
+  EXPECT_EQ(figure(dir, "luts_latency_vs_n1.svg").at("panels").size(), 1u);
   const std::string html = read_text(dir / "index.html");
   EXPECT_EQ(html.find("accuracy_vs_luts.svg"), std::string::npos);
   EXPECT_NE(html.find("src=\"luts_latency_vs_n1.svg\""), std::string::npos);
@@ -323,12 +364,12 @@ TEST(SweepReport, SinglePointAndEqualValuesHaveFiniteAxes) {
     for (const char* file : {"accuracy_vs_luts.svg", "luts_latency_vs_n1.svg", "mismatches_vs_coord_w.svg"}) {
       const std::string svg = read_text(dir / file);
       EXPECT_EQ(svg_problem(svg), "") << file;
-      EXPECT_EQ(count_of(svg, "<circle"), (file[0] == 'a' ? 1 : 2) * sets[k].size()) << file;
-      EXPECT_FALSE(std::regex_search(svg, std::regex("[\",= ]-?(nan|inf)", std::regex::icase)))
+      EXPECT_EQ(count_of(svg, "id=\"point-"), (file[0] == 'a' ? 1 : 2) * sets[k].size()) << file;
+      EXPECT_FALSE(std::regex_search(svg, std::regex("[\",= ]-?(nan|inf)[\" ,<]", std::regex::icase)))
           << k << " " << file;
       // At least two ticks on each axis.
-      EXPECT_GE(count_of(svg, "class=\"x-tick\""), 2u) << file;
-      EXPECT_GE(count_of(svg, "class=\"y-tick\""), 2u) << file;
+      EXPECT_GE(count_of(svg, "id=\"xtick_"), 2u) << file;
+      EXPECT_GE(count_of(svg, "id=\"ytick_"), 2u) << file;
     }
   }
 }
