@@ -11,7 +11,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
+#include <stdexcept>
 
 #include <signal.h>
 #include <sys/stat.h>
@@ -23,6 +25,10 @@
 #include "image/image_io.h"
 #include "common/output_file.h"
 #include "report_text.h"
+
+// app/compare_report.html, the report page with its {{slots}}, embedded at build time
+// (app/embed_text.cmake).
+extern const char kCompareReportHtml[];
 
 namespace rpu::app {
 namespace {
@@ -326,23 +332,6 @@ std::string swatch(const std::string& css) {
   return fmt::format("<span class=\"swatch\" style=\"background:{}\"></span>", css);
 }
 
-constexpr std::string_view kStyle = R"(
-body { font-family: system-ui, sans-serif; margin: 1.5em; color: #222; }
-.banner { font-size: 1.6em; font-weight: bold; padding: .5em 1em; border-radius: 6px; color: #fff; }
-.pass { background: #1a7f37; } .fail { background: #c62828; } .skip { background: #6e6e6e; }
-.warn { background: #b26a00; font-size: 1.1em; margin-top: .4em; }
-.gallery { display: flex; flex-wrap: wrap; gap: 1.2em; align-items: flex-start; }
-figure { margin: 0; max-width: 100%; }
-figure img { display: block; max-width: 100%; height: auto; border: 1px solid #bbb; }
-figcaption { font-size: .9em; margin-top: .3em; }
-table { border-collapse: collapse; margin: .5em 0 1em; }
-th, td { border: 1px solid #ccc; padding: .2em .6em; text-align: left; }
-td.num { text-align: right; font-variant-numeric: tabular-nums; }
-.swatch { display: inline-block; width: 1em; height: 1em; border: 1px solid #888;
-          vertical-align: middle; margin-right: .3em; }
-pre { background: #f4f4f4; padding: .6em; overflow-x: auto; }
-)";
-
 struct ReportParts {
   const CompareInput& in;
   const nlohmann::json& metrics;
@@ -378,134 +367,158 @@ std::string bound_banner(const nlohmann::json& metrics) {
   return "<div class=\"banner warn\">WARNING: " + escape_html(warning) + "</div>\n";
 }
 
+// The page: app/compare_report.html (embedded, kCompareReportHtml) with each {{slot}} replaced by
+// its HTML. A slot the template names that the report does not fill, or the reverse, is a bug.
+std::string fill_template(std::string_view page, const std::map<std::string, std::string>& slots) {
+  std::string out;
+  std::set<std::string> used;
+  size_t at = 0;
+  for (size_t open = page.find("{{"); open != std::string_view::npos; open = page.find("{{", at)) {
+    const size_t close = page.find("}}", open);
+    if (close == std::string_view::npos)
+      throw std::logic_error("app/compare_report.html: an unclosed {{");
+    const std::string name(page.substr(open + 2, close - open - 2));
+    const auto it = slots.find(name);
+    if (it == slots.end())
+      throw std::logic_error("app/compare_report.html: no value for {{" + name + "}}");
+    out.append(page.substr(at, open - at)).append(it->second);
+    used.insert(name);
+    at = close + 2;
+  }
+  out.append(page.substr(at));
+  for (const auto& [name, value] : slots)
+    if (!used.count(name))
+      throw std::logic_error("app/compare_report.html: no {{" + name + "}} for its value");
+  return out;
+}
+
 std::string report_html(const ReportParts& r) {
   const CompareInput& in = r.in;
   const nlohmann::json& m = r.metrics;
-  std::string html = fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-      "<title>rpu compare: {0}</title>\n<style>{1}</style>\n</head>\n<body>\n"
-      "<h1>rpu compare: {0}</h1>\n<p>{2}×{3} = {4} pixels.</p>\n",
-      escape_html(in.scene), kStyle, m["width"].get<int>(), m["height"].get<int>(), m["pixels"].get<size_t>());
-  html += banner(in, m);
-  html += bound_banner(m);
+  std::map<std::string, std::string> slot;
+  slot["scene"] = escape_html(in.scene);
+  slot["width"] = std::to_string(m["width"].get<int>());
+  slot["height"] = std::to_string(m["height"].get<int>());
+  slot["pixels"] = std::to_string(m["pixels"].get<size_t>());
+  slot["banners"] = banner(in, m) + bound_banner(m);
 
-  html += "<h2>Renders</h2>\n<div class=\"gallery\">\n";
+  std::string& renders = slot["renders"];
   for (size_t k = 0; k < in.renders.size(); ++k) {
     const BackendRender& b = in.renders[k];
-    html += figure(r.renders[k], fmt::format("<b>{}</b>: {} hit pixels, {:.3f} s", escape_html(b.name),
-                                             b.frame.hit_pixels(), b.seconds));
+    renders += figure(r.renders[k], fmt::format("<b>{}</b>: {} hit pixels, {:.3f} s", escape_html(b.name),
+                                                b.frame.hit_pixels(), b.seconds));
   }
-  html += "</div>\n";
 
-  html += "<h2>Differences</h2>\n";
+  std::string& differences = slot["differences"];
   if (r.pairs.empty()) {
-    html += "<p>No pair of backends to compare.</p>\n";
+    differences = "<p>No pair of backends to compare.</p>\n";
   } else {
-    html += fmt::format(
+    differences = fmt::format(
         "<p>In the image of <i>a</i> vs <i>b</i>: pixels where both agree show <i>a</i> at {:.0f} % "
         "brightness; {}hit only in <i>a</i>; {}hit only in <i>b</i>; {}both hit, different "
         "primitive.</p>\n<div class=\"gallery\">\n",
         100.0f * kAgreeBrightness, swatch(css_colour(as_float(kHitOnlyInA))),
         swatch(css_colour(as_float(kHitOnlyInB))), swatch(css_colour(as_float(kDifferentPrimitive))));
     for (const PairResult& p : r.pairs)
-      html += figure(p.image, fmt::format("<b>{0}</b> vs <b>{1}</b>: {2} pixels differ<br>"
-                                          "only {0}: {3}, only {1}: {4}, different primitive: {5}",
-                                          escape_html(p.a), escape_html(p.b), p.mismatched, p.only_a, p.only_b,
-                                          p.different_primitive));
-    html += "</div>\n";
+      differences += figure(p.image, fmt::format("<b>{0}</b> vs <b>{1}</b>: {2} pixels differ<br>"
+                                                 "only {0}: {3}, only {1}: {4}, different primitive: {5}",
+                                                 escape_html(p.a), escape_html(p.b), p.mismatched, p.only_a,
+                                                 p.only_b, p.different_primitive));
+    differences += "</div>\n";
   }
 
-  html += fmt::format(
-      "<h2>Disagreement heat map</h2>\n<p>Per pixel, how many of the {} compared pairs disagree "
-      "(colour map \"{}\"): ",
-      r.heat.pairs, escape_html(kHeatColorMap));
+  std::string& heat = slot["heat"];
+  heat = fmt::format("<p>Per pixel, how many of the {} compared pairs disagree (colour map \"{}\"): ",
+                     r.heat.pairs, escape_html(kHeatColorMap));
   for (int d = 0; d <= r.heat.pairs; ++d)
-    html += fmt::format("{}{} ({} px){}", swatch(r.heat.legend[static_cast<size_t>(d)]), d,
+    heat += fmt::format("{}{} ({} px){}", swatch(r.heat.legend[static_cast<size_t>(d)]), d,
                         r.heat.histogram[static_cast<size_t>(d)], d < r.heat.pairs ? ", " : ".");
   std::string compared;
   for (const PairResult& p : r.pairs) compared += (compared.empty() ? "" : ", ") + p.a + " vs " + p.b;
-  html += "</p>\n<div class=\"gallery\">\n" +
+  heat += "</p>\n<div class=\"gallery\">\n" +
           figure(r.heat.image, "pairs: " + escape_html(compared.empty() ? "none" : compared)) + "</div>\n";
 
-  html += "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>value</th></tr>\n";
+  std::string& metrics = slot["metrics"];
+  metrics = "<table>\n<tr><th>metric</th><th>value</th></tr>\n";
   for (const char* key : {"pixels", "rtl_vs_ref_mismatched_pixels", "ref_vs_float_ip_mismatched_pixels",
                           "ref_vs_float_mismatched_pixels", "float_ip_vs_float_mismatched_pixels",
                           "ref_vs_float_ip_beyond_bound", "cycles", "pairs", "latency_cycles",
                           "rtl_equals_ref"})
-    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", key, cell(m[key]));
-  html += "</table>\n<table>\n<tr><th>backend</th><th>hit pixels</th><th>seconds</th></tr>\n";
+    metrics += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td></tr>\n", key, cell(m[key]));
+  metrics += "</table>\n<table>\n<tr><th>backend</th><th>hit pixels</th><th>seconds</th></tr>\n";
   for (const BackendRender& b : in.renders)
-    html += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td></tr>\n",
-                        escape_html(b.name), b.frame.hit_pixels(), b.seconds);
-  html += "</table>\n";
+    metrics += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td></tr>\n",
+                           escape_html(b.name), b.frame.hit_pixels(), b.seconds);
+  metrics += "</table>\n";
   if (!r.pairs.empty()) {
-    html += "<table>\n<tr><th>a vs b</th><th>differ</th><th>hit only in a</th><th>hit only in b</th>"
-            "<th>different primitive</th></tr>\n";
+    metrics += "<table>\n<tr><th>a vs b</th><th>differ</th><th>hit only in a</th><th>hit only in b</th>"
+               "<th>different primitive</th></tr>\n";
     for (const PairResult& p : r.pairs)
-      html += fmt::format(
+      metrics += fmt::format(
           "<tr><td>{} vs {}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
           "<td class=\"num\">{}</td><td class=\"num\">{}</td></tr>\n",
           escape_html(p.a), escape_html(p.b), p.mismatched, p.only_a, p.only_b, p.different_primitive);
-    html += "</table>\n";
+    metrics += "</table>\n";
   }
 
-  html += "<h2>Record</h2>\n" + key_value_table(in.record, "Not recorded.");
-  html += "<h2>Resources and frame rate of this configuration</h2>\n" +
-          key_value_table(m.contains("resources") ? m["resources"] : nlohmann::json(),
-                          "Not given.");
+  slot["record"] = key_value_table(in.record, "Not recorded.");
+  slot["resources"] = key_value_table(m.contains("resources") ? m["resources"] : nlohmann::json(),
+                                      "Not given.");
 
-  html += fmt::format("<h2>Differing pixels</h2>\n<p>{} pixels where two renders disagree on the "
-                      "primitive{}; depths in world units along W.</p>\n",
-                      m["differing_pixels_total"].get<size_t>(),
-                      m["differing_pixels_total"].get<size_t>() > kMaxPixelRecords
-                          ? fmt::format(" (the first {} listed)", kMaxPixelRecords)
-                          : std::string());
+  std::string& differing = slot["differing"];
+  differing = fmt::format("<p>{} pixels where two renders disagree on the primitive{}; depths in "
+                          "world units along W.</p>\n",
+                          m["differing_pixels_total"].get<size_t>(),
+                          m["differing_pixels_total"].get<size_t>() > kMaxPixelRecords
+                              ? fmt::format(" (the first {} listed)", kMaxPixelRecords)
+                              : std::string());
   if (!m["differing_pixels"].empty()) {
-    html += "<table>\n<tr><th>pixel</th>";
+    differing += "<table>\n<tr><th>pixel</th>";
     for (const BackendRender& b : in.renders)
-      html += fmt::format("<th>{0} primitive</th><th>{0} depth</th>", escape_html(b.name));
-    html += "</tr>\n";
+      differing += fmt::format("<th>{0} primitive</th><th>{0} depth</th>", escape_html(b.name));
+    differing += "</tr>\n";
     for (const auto& rec : m["differing_pixels"]) {
-      html += fmt::format("<tr><td>({}, {})</td>", rec["x"].get<int>(), rec["y"].get<int>());
+      differing += fmt::format("<tr><td>({}, {})</td>", rec["x"].get<int>(), rec["y"].get<int>());
       for (const BackendRender& b : in.renders) {
         const auto& v = rec[b.name];
-        html += fmt::format("<td class=\"num\">{}</td><td class=\"num\">{}</td>",
-                            v["primitive"].is_null() ? "—" : v["primitive"].dump(),
-                            v["depth"].is_null() ? "—" : fmt::format("{:.6g}", v["depth"].get<double>()));
+        differing += fmt::format("<td class=\"num\">{}</td><td class=\"num\">{}</td>",
+                                 v["primitive"].is_null() ? "—" : v["primitive"].dump(),
+                                 v["depth"].is_null() ? "—" : fmt::format("{:.6g}", v["depth"].get<double>()));
       }
-      html += "</tr>\n";
+      differing += "</tr>\n";
     }
-    html += "</table>\n";
+    differing += "</table>\n";
   }
-  html += "<h2>Depth and connectivity</h2>\n";
+
+  std::string& depth = slot["depth"];
   if (m["depth_ref_vs_float"].is_object()) {
     const auto& d = m["depth_ref_vs_float"];
-    html += fmt::format("<p>ref vs float, on the {} pixels both hit with the same primitive: "
-                        "relative depth difference mean {:.3g}, max {:.3g}; {} pixels beyond "
-                        "{:g}.</p>\n",
-                        d["pixels"].get<size_t>(), d["mean_relative"].get<double>(),
-                        d["max_relative"].get<double>(), d["beyond_1e-3"].get<size_t>(),
-                        kDepthAgreement);
+    depth += fmt::format("<p>ref vs float, on the {} pixels both hit with the same primitive: "
+                         "relative depth difference mean {:.3g}, max {:.3g}; {} pixels beyond "
+                         "{:g}.</p>\n",
+                         d["pixels"].get<size_t>(), d["mean_relative"].get<double>(),
+                         d["max_relative"].get<double>(), d["beyond_1e-3"].get<size_t>(),
+                         kDepthAgreement);
   }
   if (m["curve_gaps_vs_float"].is_object()) {
     std::string gaps;
     for (const auto& [name, v] : m["curve_gaps_vs_float"].items())
       gaps += fmt::format("{}{}: {}", gaps.empty() ? "" : ", ", escape_html(name), v.get<long>());
-    html += "<p>Gaps along curves where float is connected and the backend is not (extra "
-            "8-connected pieces per curve, summed): " + gaps + ".</p>\n";
+    depth += "<p>Gaps along curves where float is connected and the backend is not (extra "
+             "8-connected pieces per curve, summed): " + gaps + ".</p>\n";
   }
 
-  html += "<h2>Hardware configuration</h2>\n" + key_value_table(in.config, "No configuration given.");
-  html += "<h2>RTL co-simulation</h2>\n" + key_value_table(in.rtl, "The RTL was not simulated.");
-  html += "<h2>Mismatch records</h2>\n";
+  slot["config"] = key_value_table(in.config, "No configuration given.");
+  slot["rtl"] = key_value_table(in.rtl, "The RTL was not simulated.");
+  std::string& mismatches = slot["mismatches"];
   if (in.mismatch_lines.empty()) {
-    html += "<p>None recorded.</p>\n";
+    mismatches = "<p>None recorded.</p>\n";
   } else {
-    html += "<pre>";
-    for (const std::string& line : in.mismatch_lines) html += escape_html(line) + "\n";
-    html += "</pre>\n";
+    mismatches = "<pre>";
+    for (const std::string& line : in.mismatch_lines) mismatches += escape_html(line) + "\n";
+    mismatches += "</pre>\n";
   }
-  return html + "</body>\n</html>\n";
+  return fill_template(kCompareReportHtml, slot);
 }
 
 
