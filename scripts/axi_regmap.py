@@ -269,7 +269,7 @@ def gen_md(m):
                 meaning.append(r["doc"]) if not meaning else meaning.insert(0, r["doc"])
             cells = [f"0x{int(r['offset'], 16):03X}" if first else "", f"`{r['name']}`" if first else "",
                      ACCESS[r["access"]] if first else "", f"`{f['name']}`", bits, " ".join(meaning)]
-            o.append("| " + " | ".join(cells) + " |")
+            o.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
             first = False
     for w in m["windows"]:
         lo = int(w["offset"], 16)
@@ -279,7 +279,7 @@ def gen_md(m):
         o += ["", f"**{rec['name']}** (`{rec['stream']}`): {rec['doc']}", "",
               "| field | width (bits) | meaning |", "|---|---|---|"]
         for f in rec["fields"]:
-            o.append(f"| `{f['name']}` | `{f['width']}` | {f.get('doc', '')} |")
+            o.append(f"| `{f['name']}` | `{f['width']}` | {f.get('doc', '').replace('|', chr(92) + '|')} |")
     o += ["", END]
     return "\n".join(o)
 
