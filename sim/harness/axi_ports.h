@@ -16,11 +16,10 @@
 #include <fmt/format.h>
 #include <verilated.h>
 
-#include "coverage_file.h"
 #include "port_bits.h"
 #include "rpu_axi_regs.h"
 #include "top_ports.h"
-#include "verilated_context.h"
+#include "verilated_model.h"
 
 namespace rpu::sim {
 
@@ -58,10 +57,7 @@ class AxiHost : public TopPorts {
 template <class V>
 class VerilatedAxiPorts final : public AxiHost {
  public:
-  VerilatedAxiPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p) {
-    ctx_ = make_context(x_seed);
-    top_ = std::make_unique<V>(ctx_.get());
-    coverage_.set_name(CoverageFile::program() + "-" + top_->modelName());
+  VerilatedAxiPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p), m_(x_seed) {
     top_->rst_ni = 0;
     idle_inputs();
   }
@@ -76,7 +72,7 @@ class VerilatedAxiPorts final : public AxiHost {
     res_beats_.clear();
     for (int k = 0; k < cycles; ++k) tick();
     top_->rst_ni = 1;
-    coverage_.mark(*ctx_);
+    m_.coverage.mark(*ctx_);
     identify();
   }
   void write_camera(const Bits& data) override { write_descriptor(0, 0, data); }
@@ -182,9 +178,9 @@ class VerilatedAxiPorts final : public AxiHost {
         }
         item_raised_ = false;
       }
-      watch(top_->m_pix_tvalid_o, top_->m_pix_tready_i, get_bits(top_->m_pix_tdata_o, axis_bits_),
+      watch(top_->m_pix_tvalid_o, top_->m_pix_tready_i, top_->m_pix_tdata_o, axis_bits_,
             top_->m_pix_tlast_o, pix_hold_, "m_pix");
-      watch(top_->m_res_tvalid_o, top_->m_res_tready_i, get_bits(top_->m_res_tdata_o, res_bits_),
+      watch(top_->m_res_tvalid_o, top_->m_res_tready_i, top_->m_res_tdata_o, res_bits_,
             top_->m_res_tlast_o, res_hold_, "m_res");
       take(top_->m_pix_tvalid_o && top_->m_pix_tready_i, top_->m_pix_tdata_o,
            top_->m_pix_tlast_o, pix_beats_, beats(rpu_axi_pixel_bits(&aw_)), axis_bits_,
@@ -207,10 +203,7 @@ class VerilatedAxiPorts final : public AxiHost {
   }
   void trace(const std::string&) override {}
   void finish() override {
-    if (finished_) return;
-    finished_ = true;
-    top_->final();
-    coverage_.write(*ctx_);
+    m_.finish();
   }
 
   int lite_write(std::uint32_t addr, std::uint32_t data, std::uint32_t strb = 0xF) override {
@@ -313,11 +306,7 @@ class VerilatedAxiPorts final : public AxiHost {
     const bool on = item_.width() != 0 && item_raised_;
     top_->s_item_tvalid_i = on;
     if (on) {
-      Bits beat(axis_bits_);
-      for (int b = 0; b < axis_bits_; ++b)
-        if (item_beat_ * axis_bits_ + b < item_.width())
-          beat.set_bit(b, item_.bit(item_beat_ * axis_bits_ + b));
-      put(top_->s_item_tdata_i, beat);
+      put(top_->s_item_tdata_i, slice(item_, item_beat_, axis_bits_));
       top_->s_item_tlast_i = items_sent_ + 1 == frame_items_ && item_beat_ + 1 == item_beats();
     } else {
       top_->s_item_tlast_i = 0;
@@ -343,21 +332,34 @@ class VerilatedAxiPorts final : public AxiHost {
     set(RPU_AXI_ITEM_PIECE, it.piece);
     return b;
   }
-  Bits gather(const std::vector<Bits>& earlier, const Bits& now) const {
-    Bits b;
-    for (const Bits& e : earlier) append(b, e);
-    append(b, now);
+  // Every bus is a whole number of 32-bit words, so beats cut and join at word boundaries.
+  static Bits slice(const Bits& rec, int beat, int bus) {
+    Bits b(bus);
+    const std::size_t first = static_cast<std::size_t>(beat * bus / 32);
+    for (std::size_t k = 0; k < b.words().size() && first + k < rec.words().size(); ++k)
+      b.words()[k] = rec.words()[first + k];
     return b;
   }
-  static void append(Bits& b, const Bits& e) {
-    for (int k = 0; k < e.width(); ++k) b.push(e.bit(k) ? 1 : 0, 1);
+  static Bits gather(const std::vector<Bits>& earlier, const Bits& now) {
+    std::vector<std::uint32_t> words;
+    for (const Bits& e : earlier) words.insert(words.end(), e.words().begin(), e.words().end());
+    words.insert(words.end(), now.words().begin(), now.words().end());
+    Bits b(static_cast<int>(32 * words.size()));
+    b.words() = std::move(words);
+    return b;
   }
   // A master's rule: a beat offered and not taken is offered again next cycle, unchanged.
-  void watch(bool valid, bool ready, const Bits& data, bool last, Hold& h, const char* port) {
+  // TDATA is read only for a beat offered and not taken, or one held the cycle before.
+  template <class P>
+  void watch(bool valid, bool ready, const P& tdata, int bus, bool last, Hold& h,
+             const char* port) {
+    const bool now_held = valid && !ready;
+    if (!h.held && !now_held) return;
+    const Bits data = get_bits(tdata, bus);
     if (h.held && (!valid || data.words() != h.data.words() || last != h.last))
       protocol_errors_.push_back(fmt::format("{}: a beat not taken was {} (cycle {})", port,
                                              valid ? "changed" : "withdrawn", clock_));
-    h.held = valid && !ready;
+    h.held = now_held;
     h.data = data;
     h.last = last;
   }
@@ -414,10 +416,9 @@ class VerilatedAxiPorts final : public AxiHost {
   TopWidths w_;
   rpu_axi_widths aw_{};
   int axis_bits_ = 32, res_bits_ = 32;
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<V> top_;
-  CoverageFile coverage_;
-  bool finished_ = false;
+  VerilatedModel<V> m_;
+  VerilatedContext* const ctx_ = m_.ctx.get();
+  V* const top_ = m_.top.get();
   std::uint64_t clock_ = 0;
   Bits item_;                 // the item being sent (width 0: none)
   int item_beat_ = 0;

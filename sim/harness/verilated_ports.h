@@ -11,7 +11,7 @@
 #include "coverage_file.h"
 #include "port_bits.h"
 #include "top_ports.h"
-#include "verilated_context.h"
+#include "verilated_model.h"
 
 namespace rpu::sim {
 
@@ -19,10 +19,7 @@ namespace rpu::sim {
 template <class V, bool Traced>
 class VerilatedPorts final : public TopPorts {
  public:
-  VerilatedPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p) {
-    ctx_ = make_context(x_seed);
-    top_ = std::make_unique<V>(ctx_.get());
-    coverage_.set_name(CoverageFile::program() + "-" + top_->modelName());
+  VerilatedPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p), m_(x_seed) {
     top_->rst_ni = 0;
     top_->cam_we_i = 0;
     top_->seg_we_i = 0;
@@ -37,7 +34,7 @@ class VerilatedPorts final : public TopPorts {
     top_->rst_ni = 0;
     for (int k = 0; k < cycles; ++k) tick();
     top_->rst_ni = 1;
-    coverage_.mark(*ctx_);  // the toggle base: power-up values and the first reset left out
+    m_.coverage.mark(*ctx_);  // the toggle base: power-up values and the first reset left out
   }
   void write_camera(const Bits& data) override {
     put(top_->cam_data_i, data);
@@ -122,10 +119,7 @@ class VerilatedPorts final : public TopPorts {
     (void)fst_path;
   }
   void finish() override {
-    if (finished_) return;
-    finished_ = true;
-    top_->final();
-    coverage_.write(*ctx_);
+    if (!m_.finish()) return;
 #if VM_TRACE_FST
     if (fst_) fst_->close();
 #endif
@@ -147,13 +141,12 @@ class VerilatedPorts final : public TopPorts {
 #endif
   }
   TopWidths w_;
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<V> top_;
+  VerilatedModel<V> m_;
+  VerilatedContext* const ctx_ = m_.ctx.get();
+  V* const top_ = m_.top.get();
 #if VM_TRACE_FST
   std::unique_ptr<VerilatedFstC> fst_;
 #endif
-  CoverageFile coverage_;  // RPU_COVERAGE_DIR, in a coverage build
-  bool finished_ = false;
 };
 
 }  // namespace rpu::sim
