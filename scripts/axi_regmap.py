@@ -249,6 +249,11 @@ def gen_h(m):
     return "\n".join(o) + "\n"
 
 
+def md_cell(text):
+    """A Markdown table cell's text: a '|' in it escaped."""
+    return text.replace("|", "\\|")
+
+
 def gen_md(m):
     o = [BEGIN, "", f"Register map version {m['version']['major']}.{m['version']['minor']}; "
          f"AXI4-Lite, {m['lite']['data_bits']}-bit data, {m['lite']['addr_bits']}-bit byte addresses. "
@@ -269,7 +274,7 @@ def gen_md(m):
                 meaning.append(r["doc"]) if not meaning else meaning.insert(0, r["doc"])
             cells = [f"0x{int(r['offset'], 16):03X}" if first else "", f"`{r['name']}`" if first else "",
                      ACCESS[r["access"]] if first else "", f"`{f['name']}`", bits, " ".join(meaning)]
-            o.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+            o.append("| " + " | ".join(md_cell(c) for c in cells) + " |")
             first = False
     for w in m["windows"]:
         lo = int(w["offset"], 16)
@@ -279,7 +284,7 @@ def gen_md(m):
         o += ["", f"**{rec['name']}** (`{rec['stream']}`): {rec['doc']}", "",
               "| field | width (bits) | meaning |", "|---|---|---|"]
         for f in rec["fields"]:
-            o.append(f"| `{f['name']}` | `{f['width']}` | {f.get('doc', '').replace('|', chr(92) + '|')} |")
+            o.append(f"| `{f['name']}` | `{f['width']}` | {md_cell(f.get('doc', ''))} |")
     o += ["", END]
     return "\n".join(o)
 

@@ -18,6 +18,8 @@ import re
 import sys
 from pathlib import Path
 
+import hw_params  # scripts/hw_params.py: the table of hardware parameters
+
 # (file relative to rtl/, parameter): why this module's default differs on purpose.
 EXCEPTIONS = {
     ("surface/rpu_surface_ip.v", "Unrolled"):
@@ -35,23 +37,11 @@ DECL = re.compile(r"parameter\s+integer\s+([A-Za-z_]\w*)\s*=\s*(-?\d+)")
 
 
 def table_defaults(root):
-    """Verilog name -> default (as the Verilog parameter's integer) from hw_params.def."""
-    text = (root / "ref/model/hw_params.def").read_text()
-    out = {}
-    for m in re.finditer(r"^RPU_HW_PARAM\((.*?)\)\s*$", text, re.M | re.S):
-        fields = [f.strip() for f in re.findall(r'"(?:[^"\\]|\\.)*"|[^,]+', m.group(1))]
-        if len(fields) < 7:
-            continue
-        verilog = fields[4].strip('"')
-        default = fields[6]
-        if not verilog:
-            continue
-        value = {"true": 1, "false": 0, "Metric::kAbs": 0, "Metric::kSquared": 1}.get(default, default)
-        try:
-            out[verilog] = int(value)
-        except ValueError:
-            raise SystemExit(f"check_rtl_params.py: hw_params.def: {verilog}: default {default!r} "
-                             "is not an integer")
+    """Verilog name -> default from hw_params.def (scripts/hw_params.py)."""
+    try:
+        out = hw_params.verilog_defaults(root)
+    except ValueError as e:
+        raise SystemExit(f"check_rtl_params.py: {e}")
     if not out:
         raise SystemExit("check_rtl_params.py: no entries read from ref/model/hw_params.def")
     return out

@@ -25,6 +25,8 @@ import subprocess
 import sys
 import time
 
+import hw_params  # scripts/hw_params.py: the table of hardware parameters
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # name: (OPT_FAST, x-assign, trace, threads, dfg)
@@ -42,18 +44,10 @@ VARIANTS = [
 
 def default_params():
     """The Verilog parameters of rpu_top at the defaults, from the one table of parameters."""
-    text = open(os.path.join(ROOT, "ref/model/hw_params.def")).read()
-    out = []
-    for m in re.finditer(r'^RPU_HW_PARAM\(\s*\w+,\s*\w+,\s*"\w+",\s*"[-\w]+",\s*"(\w*)",\s*"[^"]*",'
-                         r'\s*([^,]+),', text, re.M):
-        name, value = m.group(1), m.group(2).strip()
-        if not name:
-            continue
-        value = {"true": "1", "false": "0", "Metric::kAbs": "0", "Metric::kSquared": "1"}.get(value, value)
-        if not re.fullmatch(r"-?\d+", value):
-            sys.exit(f"cosim_build_table.py: cannot read the default of {name}: {value}")
-        out.append(f"{name}={value}")
-    return ",".join(out)
+    try:
+        return ",".join(f"{k}={v}" for k, v in hw_params.verilog_defaults(ROOT).items())
+    except ValueError as e:
+        sys.exit(f"cosim_build_table.py: {e}")
 
 
 def run(cmd, log, env=None):
