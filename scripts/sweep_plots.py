@@ -83,10 +83,12 @@ def draw(figure, out_path):
                 if p.get("label"):
                     ax.annotate(p["label"], (p["x"], p["y"]), xytext=(5, 4),
                                 textcoords="offset points", fontsize=8, color="#333333")
-            handles.setdefault(series["name"], matplotlib.lines.Line2D(
+            if series["name"] in handles:
+                continue
+            handles[series["name"]] = matplotlib.lines.Line2D(
                 [], [], color=colour, marker="o", markeredgecolor="#222222",
                 linestyle=dashes(series.get("dash", "")) if series.get("line", True) else "none",
-                linewidth=2.6 if highlighted else 1.3))
+                linewidth=2.6 if highlighted else 1.3)
         ax.set_title(panel["title"], loc="left")
         ax.set_ylabel(panel["y_label"])
         ax.set_xlabel(figure["x_label"])

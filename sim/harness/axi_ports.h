@@ -109,15 +109,15 @@ class VerilatedAxiPorts final : public AxiHost {
     top_->eval();
   }
   bool item_ready() const override {
-    return top_->s_item_tvalid_i && top_->s_item_tready_o && item_beat_ + 1 == item_beats();
+    return top_->s_item_tvalid_i && top_->s_item_tready_o && item_beat_ + 1 == item_nbeats_;
   }
   bool res_valid() const override {
     return top_->m_res_tvalid_o &&
-           static_cast<int>(res_beats_.size()) + 1 == beats(rpu_axi_result_bits(&aw_), res_bits_);
+           static_cast<int>(res_beats_.size()) + 1 == res_nbeats_;
   }
   bool pix_valid() const override {
     return top_->m_pix_tvalid_o &&
-           static_cast<int>(pix_beats_.size()) + 1 == beats(rpu_axi_pixel_bits(&aw_));
+           static_cast<int>(pix_beats_.size()) + 1 == pix_nbeats_;
   }
   ItemResult result() const override {
     const Bits b = gather(res_beats_, get_bits(top_->m_res_tdata_o, res_bits_));
@@ -172,7 +172,7 @@ class VerilatedAxiPorts final : public AxiHost {
     const bool irq_before = top_->irq_o;
     if (top_->rst_ni) {
       if (top_->s_item_tvalid_i && top_->s_item_tready_o) {
-        if (++item_beat_ == item_beats()) {
+        if (++item_beat_ == item_nbeats_) {
           ++items_sent_;
           item_ = Bits();
         }
@@ -183,10 +183,10 @@ class VerilatedAxiPorts final : public AxiHost {
       watch(top_->m_res_tvalid_o, top_->m_res_tready_i, top_->m_res_tdata_o, res_bits_,
             top_->m_res_tlast_o, res_hold_, "m_res");
       take(top_->m_pix_tvalid_o && top_->m_pix_tready_i, top_->m_pix_tdata_o,
-           top_->m_pix_tlast_o, pix_beats_, beats(rpu_axi_pixel_bits(&aw_)), axis_bits_,
+           top_->m_pix_tlast_o, pix_beats_, pix_nbeats_, axis_bits_,
            pix_seen_, frame_pixels_, "pixel");
       take(top_->m_res_tvalid_o && top_->m_res_tready_i, top_->m_res_tdata_o,
-           top_->m_res_tlast_o, res_beats_, beats(rpu_axi_result_bits(&aw_), res_bits_), res_bits_,
+           top_->m_res_tlast_o, res_beats_, res_nbeats_, res_bits_,
            res_seen_, frame_items_, "item result");
     }
     top_->clk_i = 0;
@@ -307,16 +307,14 @@ class VerilatedAxiPorts final : public AxiHost {
     top_->s_item_tvalid_i = on;
     if (on) {
       put(top_->s_item_tdata_i, slice(item_, item_beat_, axis_bits_));
-      top_->s_item_tlast_i = items_sent_ + 1 == frame_items_ && item_beat_ + 1 == item_beats();
+      top_->s_item_tlast_i = items_sent_ + 1 == frame_items_ && item_beat_ + 1 == item_nbeats_;
     } else {
       top_->s_item_tlast_i = 0;
     }
   }
-  int beats(unsigned bits) const { return beats(bits, axis_bits_); }
   static int beats(unsigned bits, int bus) {
     return static_cast<int>((bits + static_cast<unsigned>(bus) - 1) / static_cast<unsigned>(bus));
   }
-  int item_beats() const { return beats(rpu_axi_item_bits(&aw_)); }
   Bits pack_item(const WorkItem& it) const {
     Bits b(static_cast<int>(rpu_axi_item_bits(&aw_)));
     const auto set = [&](int k, i128 v) {
@@ -403,6 +401,9 @@ class VerilatedAxiPorts final : public AxiHost {
     const std::uint32_t axis = read(RPU_AXI_BUILD_AXIS);
     axis_bits_ = 8 * static_cast<int>(RPU_AXI_FIELD(axis, RPU_AXI_BUILD_AXIS_AXIS_BYTES));
     res_bits_ = 8 * static_cast<int>(RPU_AXI_FIELD(axis, RPU_AXI_BUILD_AXIS_RES_BYTES));
+    item_nbeats_ = beats(rpu_axi_item_bits(&aw_), axis_bits_);
+    pix_nbeats_ = beats(rpu_axi_pixel_bits(&aw_), axis_bits_);
+    res_nbeats_ = beats(rpu_axi_result_bits(&aw_), res_bits_);
     const auto u = [](int v) { return static_cast<unsigned>(v); };
     if (aw_.IdW != u(TopWidths::kIdW) || aw_.IdxW != u(TopWidths::kIdxW) ||
         aw_.SegAddrW != u(TopWidths::kSegAddrW) || aw_.PrimW != u(TopWidths::kPrimW) ||
@@ -416,6 +417,7 @@ class VerilatedAxiPorts final : public AxiHost {
   TopWidths w_;
   rpu_axi_widths aw_{};
   int axis_bits_ = 32, res_bits_ = 32;
+  int item_nbeats_ = 1, pix_nbeats_ = 1, res_nbeats_ = 1;  // beats of a record (identify())
   VerilatedModel<V> m_;
   VerilatedContext* const ctx_ = m_.ctx.get();
   V* const top_ = m_.top.get();
