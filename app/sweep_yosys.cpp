@@ -35,12 +35,30 @@ fs::path module_file(const std::string& module) {
   throw Error(list.string(), "no such RTL module: " + module);
 }
 
-// The integer parameters the module's Verilog declares.
+// A header the module includes: the file of that name under rtl/ (rtl/rpu.f's include
+// directories are rtl/'s subdirectories).
+fs::path header_file(const std::string& name) {
+  const fs::path rtl = fs::path(RPU_SOURCE_DIR) / "rtl";
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(rtl, ec); !ec && it != fs::end(it);
+       it.increment(ec))
+    if (it->path().filename() == name) return it->path();
+  throw Error(rtl.string(), "no such RTL header: " + name);
+}
+
+// The integer parameters the module's Verilog declares, in its file or a header it includes
+// (rpu_top's list is rtl/top/rpu_top_params.vh).
 std::vector<std::string> module_parameters(const std::string& module) {
   const fs::path file = module_file(module);
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) throw Error(file.string(), "no such RTL module");
-  const std::string text = read_input_file(file.string(), "RTL module");
+  std::string text = read_input_file(file.string(), "RTL module");
+  const std::regex inc("`include\\s+\"([^\"]+)\"");
+  std::string headers;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), inc); it != std::sregex_iterator();
+       ++it)
+    headers += read_input_file(header_file((*it)[1]).string(), "RTL header");
+  text += headers;
   std::vector<std::string> names;
   const std::regex re("parameter\\s+integer\\s+([A-Za-z0-9_]+)");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator();

@@ -29,6 +29,7 @@ common/rpu_mul_vec.v
 // header: common/rpu_mul_latency.vh
 // header: common/rpu_widths.vh
 // header: common/rpu_latency_check.vh
+// header: common/rpu_formal_ports.vh
 common/rpu_sqrt.v
 common/rpu_div.v
 common/rpu_cordic.v
@@ -72,11 +73,13 @@ surface/rpu_surface_admit.v
 top/rpu_ray_gen.v
 top/rpu_resolve.v
 top/rpu_top.v
+// header: top/rpu_top_params.vh
 // header: top/rpu_cam_desc.vh
 // header: top/rpu_seg_desc.vh
 // header: top/rpu_top_words.vh
 // header: top/rpu_surf_desc.vh
 // header: top/rpu_top_props.vh
+// header: top/rpu_top_formal_decl.vh
 // header: top/rpu_top_formal_ray.vh
 // header: top/rpu_top_formal_paths.vh
 // header: top/rpu_top_formal_surface.vh

@@ -1,7 +1,11 @@
 # CTest rtl_params_catches: scripts/check_rtl_params.py on a copy of rtl/ and the parameter table:
 # the copy passes; a module with a wrong default of a table parameter (rpu_chord's TFrac) fails
-# naming the file, the line and the table's value; a module that declares one of rpu_top's
-# parameters with another default (rpu_axi's IdxW) fails naming rpu_top's.
+# naming the file, the line and the table's value, as does a wrong default in rpu_top's own
+# parameter list (rpu_top_params.vh's TFrac); a module that declares one of rpu_top's parameters
+# with another default (rpu_resolve's PrimW) fails naming rpu_top's; an AXI shell that declares
+# its own list instead of including rpu_top's fails; a module that writes a width formula of
+# rpu_widths.vh out by hand (rpu_capture's DepthW) fails naming the macro; a testbench default
+# that is not the table's (tb_common.h's COORD_W) fails.
 # Usage: cmake -DPYTHON=<python3> -DSRC=<checkout> -DWORK=<scratch dir> -P rtl_params.cmake
 cmake_minimum_required(VERSION 3.25)
 function(fresh_copy)
@@ -9,6 +13,8 @@ function(fresh_copy)
   file(MAKE_DIRECTORY ${WORK}/ref/model)
   file(COPY ${SRC}/rtl DESTINATION ${WORK})
   file(COPY_FILE ${SRC}/ref/model/hw_params.def ${WORK}/ref/model/hw_params.def)
+  file(MAKE_DIRECTORY ${WORK}/sim/tb)
+  file(COPY_FILE ${SRC}/sim/tb/tb_common.h ${WORK}/sim/tb/tb_common.h)
 endfunction()
 function(check want_rc want_text what)
   execute_process(COMMAND ${PYTHON} ${SRC}/scripts/check_rtl_params.py --root ${WORK}
@@ -36,6 +42,19 @@ check(0 "agree with the table" "the committed RTL")
 edit(rtl/curve/rpu_chord.v "parameter integer TFrac = 24" "parameter integer TFrac = 20")
 check(1 "rtl/curve/rpu_chord.v:" "a wrong default of a table parameter")
 fresh_copy()
-edit(rtl/axi/rpu_axi.v "parameter integer IdxW     = 14" "parameter integer IdxW     = 12")
-check(1 "IdxW = 12, rpu_top.v declares 14" "a wrong default of one of rpu_top's parameters")
+edit(rtl/top/rpu_top_params.vh "parameter integer TFrac    = 24" "parameter integer TFrac    = 22")
+check(1 "rtl/top/rpu_top_params.vh:" "a wrong default in rpu_top's parameter list")
+fresh_copy()
+edit(rtl/top/rpu_resolve.v "parameter integer PrimW  = 16" "parameter integer PrimW  = 12")
+check(1 "PrimW = 12, rpu_top_params.vh declares 16" "a wrong default of one of rpu_top's parameters")
+fresh_copy()
+edit(rtl/axi/rpu_axi.v "`include \"rpu_top_params.vh\"" "parameter integer IdxW = 14")
+check(1 "does not include rpu_top_params.vh" "an AXI shell with a parameter list of its own")
+fresh_copy()
+edit(rtl/curve/rpu_capture.v "DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)" "DepthW = CoordW + 4 + EdgeW + 2")
+check(1 "rpu_capture.v:26: DepthW = CoordW + 4 + EdgeW + 2 repeats `RPU_DEPTHW(CoordW, EdgeFrac)"
+      "a width formula written out by hand")
+fresh_copy()
+edit(sim/tb/tb_common.h "#define COORD_W 24" "#define COORD_W 20")
+check(1 "COORD_W = 20, the table (ref/model/hw_params.def) says 24" "a testbench default")
 file(REMOVE_RECURSE ${WORK})

@@ -20,45 +20,12 @@
 `include "rpu_widths.vh"
 
 module rpu_axi #(
-  // rpu_top's parameters (rtl/top/rpu_top.v; the same names, ranges and defaults).
-  parameter integer CoordW   = 24,
-  parameter integer DirFrac  = 24,
-  parameter integer TFrac    = 24,
-  parameter integer UnitFrac = 16,
-  parameter integer EdgeFrac = 16,
-  parameter integer InvW     = 18,
-  parameter integer SqrtW    = 0,
-  parameter integer N        = 16,
-  parameter integer N1       = 2,
-  parameter integer Metric   = 0,
-  parameter integer Unrolled = 1,
-  parameter integer SegAddrW = 12,
-  parameter integer IdxW     = 14,
-  parameter integer IdW      = 32,
-  parameter integer PrimW    = 16,
-  parameter integer FifoLog2 = 10,
-  parameter integer Surfaces = 1,
-  parameter integer SurfW    = 24,
-  parameter integer AngleW   = 20,
-  parameter integer Turns    = 8,
-  parameter integer N1First  = 7,
-  parameter integer Indicators = 1,
-  parameter integer SurfAddrW = 4,
   // The shell's own.
   parameter integer AxisW       = 64,     // TDATA bits of s_item and m_pix: 32, 64 or 128
   parameter integer ResAxisW    = AxisW,  // TDATA bits of m_res: 32, 64, 128, 256 or 512
   parameter integer ItemResults = 1,      // 1: the per-item result stream m_res is built
-  // Derived (do not override): as in rpu_top, which checks them.
-  parameter integer TW     = `RPU_TW(TFrac),
-  parameter integer XW     = `RPU_XW(CoordW),
-  parameter integer CamW   = 9 * `RPU_VGW(DirFrac) + 12 * `RPU_EGW(EdgeFrac) + 3 * CoordW,
-  parameter integer SegW   = 1 + PrimW + 9 * CoordW + 3 + `RPU_R2W(CoordW) + `RPU_L2W(CoordW)
-                           + InvW + 7 + 2 * (2 + `RPU_HW(CoordW) + CoordW + TFrac
-                                             + 3 * `RPU_UW(UnitFrac))
-                           + `RPU_FRDW + 2 * `RPU_FGDW,
-  parameter integer SurfDW = PrimW + 6 * CoordW + `RPU_R2W(CoordW) + 9 * (SurfW + 2) + 7
-                           + 2 * SurfW + AngleW + 2 * (SurfW + 2) + `RPU_SDW(SurfW),
-  parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)
+  // rpu_top's (the same names, ranges and defaults; its derived widths last).
+`include "rpu_top_params.vh"
 ) (
   input  wire              clk_i,
   input  wire              rst_ni,

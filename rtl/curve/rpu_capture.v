@@ -23,7 +23,7 @@ module rpu_capture #(
   // Derived (do not override).
   parameter integer XW     = `RPU_XW(CoordW),              // curve point X
   parameter integer EdgeW  = `RPU_EGW(EdgeFrac),       // Q(4.FE+14)
-  parameter integer DepthW = CoordW + 4 + EdgeW + 2   // q·W
+  parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac) // q·W
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,

@@ -359,31 +359,12 @@ module rpu_ip_step #(
   //      sd_j ≤ sd_i for every i > j), η and the selected md's, registered ----
   reg [J-1:0] win;
   integer a, b;
-`ifdef RPU_FAULT
-  // The fault-injected build: which fault is on comes from the harness at time zero (DPI,
-  // sim/harness/rtl_backend.cpp; 0 none, 1 the argmin tie rule, 2 rpu_resolve's depth order).
-  import "DPI-C" function int rpu_fault();
-  integer fault_sel;
-  initial fault_sel = rpu_fault();
-  wire fault_tie = fault_sel == 1;
-`endif
   always @(*) begin
     for (a = 0; a < J; a = a + 1) begin
       win[a] = 1'b1;
       for (b = 0; b < J; b = b + 1) begin
-`ifdef RPU_FAULT
-        // Deliberate fault for the co-simulation checker's own tests: the last minimum wins.
-        if (fault_tie) begin
-          if (b < a && sd[a] > sd[b]) win[a] = 1'b0;
-          if (b > a && sd[a] >= sd[b]) win[a] = 1'b0;
-        end else begin
-          if (b < a && sd[a] >= sd[b]) win[a] = 1'b0;
-          if (b > a && sd[a] > sd[b]) win[a] = 1'b0;
-        end
-`else
         if (b < a && sd[a] >= sd[b]) win[a] = 1'b0;
         if (b > a && sd[a] > sd[b]) win[a] = 1'b0;
-`endif
       end
     end
   end

@@ -44,7 +44,7 @@ module rpu_sphere #(
   parameter integer SqrtW   = 0,   // widest radicand of the square root; 0 = exact (16..126)
   parameter integer TagW    = 1,   // side-band bits carried with each operand (>= 1)
   // Derived (do not override).
-  parameter integer DirW  = DirFrac + 2,     // v̂: Q(2.DirFrac)
+  parameter integer DirW  = `RPU_VHATW(DirFrac),  // v̂: Q(2.DirFrac)
   parameter integer DiffW = `RPU_DW(CoordW),      // d, AB: differences of two positions
   parameter integer R2W   = `RPU_R2W(CoordW),  // R² (the compiler's R² < 2^(2CoordW))
   parameter integer TcW   = CoordW + 4,      // tc: |v̂·q| < 3·2^(CoordW+1) for any v̂, q

@@ -87,7 +87,7 @@ module rpu_surface_setup #(
                                    // results come with the item on sp_*_i, and eye_i, vhat_i,
                                    // c0_i, r2_i are unused
   // Derived (do not override).
-  parameter integer DirW   = DirFrac + 2,     // v̂: Q(2.FV)
+  parameter integer DirW   = `RPU_VHATW(DirFrac),     // v̂: Q(2.FV)
   parameter integer DiffW  = `RPU_DW(CoordW),      // B − A, X − origin
   parameter integer R2W    = `RPU_R2W(CoordW),  // R²
   parameter integer MantW  = SurfW + 2,       // MW: the entries of M, signed

@@ -57,14 +57,14 @@ module rpu_surface_top #(
   parameter integer Sphere   = 1,   // 1: the setup's own sphere unit; 0: the caller's, whose
                                     // results come with the item on sp_*_i (rpu_surface_setup)
   // Derived (do not override).
-  parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
+  parameter integer DirW   = `RPU_VHATW(DirFrac),              // v̂: Q(2.FV)
   parameter integer DiffW  = `RPU_DW(CoordW),               // B' − A', X − h
   parameter integer BR2W   = `RPU_R2W(CoordW),           // the bounding sphere's R²
   parameter integer MantW  = SurfW + 2,                // M's entries, ScaledConst mantissas
   parameter integer ConstW = SurfW + 2,                // end_cos, end_sin, kd, ke2: Q(1.KF)
   parameter integer DescW  = `RPU_SDW(SurfW),          // the indicator's fields (rpu_surface_desc.vh)
   parameter integer EdgeW  = `RPU_EGW(EdgeFrac),        // W: Q(4.FE+14)
-  parameter integer DepthW = CoordW + 4 + EdgeW + 2    // rpu_capture's depth
+  parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)    // rpu_capture's depth
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,

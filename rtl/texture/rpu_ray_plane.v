@@ -35,9 +35,9 @@ module rpu_ray_plane #(
   parameter integer EdgeFrac = 16,  // FE: fraction bits of W, Q(4.FE+14) (8..40)
   parameter integer TagW     = 1,   // side-band bits carried with each ray (>= 1)
   // Derived (do not override).
-  parameter integer DirW   = DirFrac + 2,              // v̂: Q(2.FV)
+  parameter integer DirW   = `RPU_VHATW(DirFrac),              // v̂: Q(2.FV)
   parameter integer EdgeW  = `RPU_EGW(EdgeFrac),        // W: Q(4.FE+14)
-  parameter integer DepthW = CoordW + 4 + EdgeW + 2    // depth: rpu_capture's depth_o width
+  parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)    // depth: rpu_capture's depth_o width
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,
@@ -73,7 +73,8 @@ module rpu_ray_plane #(
     if (DirFrac < 8 || DirFrac > 40) $fatal(1, "rpu_ray_plane: DirFrac must be in 8..40");
     if (EdgeFrac < 8 || EdgeFrac > 40) $fatal(1, "rpu_ray_plane: EdgeFrac must be in 8..40");
     if (TagW < 1) $fatal(1, "rpu_ray_plane: TagW must be >= 1");
-    if (DirW != `RPU_VHATW(DirFrac) || EdgeW != 4 + EdgeFrac + 14 || DepthW != CoordW + 4 + EdgeW + 2)
+    if (DirW != `RPU_VHATW(DirFrac) || EdgeW != `RPU_EGW(EdgeFrac)
+        || DepthW != `RPU_DEPTHW(CoordW, EdgeFrac))
       $fatal(1, "rpu_ray_plane: derived parameters must not be overridden");
   end
 

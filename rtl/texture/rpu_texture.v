@@ -92,7 +92,7 @@ module rpu_texture #(
   localparam integer EW   = CW + 4;          // e = X − p0
   localparam integer EPW  = 2 * EW;          // e_k²
   localparam integer ESW  = 2 * EW + 2;      // |e|² with w0_2, signed compare
-  localparam integer GW   = CW + 2;          // rpu_guide_pair's g
+  localparam integer GW   = `RPU_PRW(CW);          // rpu_guide_pair's g
 `include "rpu_guide_desc.vh"
   localparam integer GsW  = GsWords;          // one guide's shape {mode, h, a, b}
 
@@ -301,7 +301,7 @@ module rpu_texture #(
   // The two guides at t̂; what the curve point and the end need rides in guide 1's tag.
   // ---------------------------------------------------------------------------------------------
   localparam integer G1TagW = TgW + 2 + W02W + 6 * CW + 3 * DW + 6 * UW + TW + 1;
-  localparam integer RadW   = 2 * CW + 10;
+  localparam integer RadW   = `RPU_GRADW(CW);
   wire              g1_valid, g1_ovf;
   wire [GW-1:0]     g1, g2;
   wire [TFrac-2:0]  w_unused;

@@ -41,8 +41,8 @@ module rpu_ray_gen #(
   // Derived (do not override). 4 integer bits (kDirInt, kEdgeInt), 14 guard bits (kRayGuard).
   parameter integer VgW      = `RPU_VGW(DirFrac),   // v0, dx, dy: Q(4.FV+14)
   parameter integer EgW      = `RPU_EGW(EdgeFrac),  // el0, et0, σW: Q(4.FE+14)
-  parameter integer VW       = 4 + DirFrac,        // v: Q(4.FV)
-  parameter integer VhW      = 2 + DirFrac,        // v̂: Q(2.FV)
+  parameter integer VW       = `RPU_VW(DirFrac),        // v: Q(4.FV)
+  parameter integer VhW      = `RPU_VHATW(DirFrac),        // v̂: Q(2.FV)
   parameter integer EdgeOutW = EgW + IdxW + 1      // E_*: el0 − k·σW for 0 <= k <= 2^IdxW, exact
 ) (
   input  wire                  clk_i,

@@ -29,46 +29,10 @@
 // input skid register's own flip-flop.
 `default_nettype none
 `include "rpu_widths.vh"
+`include "rpu_formal_ports.vh"
 
 module rpu_top #(
-  parameter integer CoordW   = 24,  // position width (12..40)
-  parameter integer DirFrac  = 24,  // ray direction fraction bits (8..40)
-  parameter integer TFrac    = 24,  // chord parameter fraction bits (8..48)
-  parameter integer UnitFrac = 16,  // guide direction fraction bits (8..40)
-  parameter integer EdgeFrac = 16,  // PVP edge vector fraction bits (8..40)
-  parameter integer InvW     = 18,  // 1/L² mantissa bits (8..40)
-  parameter integer SqrtW    = 0,   // widest square-root radicand; 0 = exact
-  parameter integer N        = 16,  // result bits of τ (1..40)
-  parameter integer N1       = 2,   // bits per step (1..8), N % N1 == 0
-  parameter integer Metric   = 0,   // 0: |pr − X| (seed), 1: |pr − X|²
-  parameter integer Unrolled = 1,   // 1: K step units (one item per cycle), 0: one reused K times
-  parameter integer SegAddrW = 12,  // log2 of the segment descriptor capacity (1..16)
-  parameter integer IdxW     = 14,  // pixel index width (1..14)
-  parameter integer IdW      = 32,  // width of the caller's work-item id (1..64)
-  parameter integer PrimW    = 16,  // primitive id width (1..31)
-  parameter integer FifoLog2 = 10,  // log2 of the items in flight + waiting (2..12)
-  // Surfaces (the surface path, rpu_surface_top, always in its iterative form).
-  parameter integer Surfaces = 1,   // 1: the surface path is built; 0: curves and textures only
-                                    // (a surface item is answered with no piece, no hit and
-                                    // the overflow bit; its descriptor write is ignored)
-  parameter integer SurfW    = 24,  // LW: signed width of surface-local coordinates (16..36)
-  parameter integer AngleW   = 20,  // AW: binary-angle bits (12..32, <= LW + 10)
-  parameter integer Turns    = 8,   // rpu_indicator's spiral / snail turn lanes (2..8)
-  parameter integer N1First  = 7,   // bits of the search's step 1 (0: N1; 1..10, at most N used)
-  parameter integer Indicators = 1, // indicators of the search's pass unit (1..64; 0: 2^N1 − 1)
-  parameter integer SurfAddrW = 4,  // log2 of the surface descriptor capacity (1..SegAddrW)
-  // Derived (do not override): the port widths; the layouts themselves are in
-  // rpu_cam_desc.vh and rpu_seg_desc.vh, which check these totals.
-  parameter integer TW     = `RPU_TW(TFrac),
-  parameter integer XW     = `RPU_XW(CoordW),
-  parameter integer CamW   = 9 * `RPU_VGW(DirFrac) + 12 * `RPU_EGW(EdgeFrac) + 3 * CoordW,
-  parameter integer SegW   = 1 + PrimW + 9 * CoordW + 3 + `RPU_R2W(CoordW) + `RPU_L2W(CoordW)
-                           + InvW + 7 + 2 * (2 + `RPU_HW(CoordW) + CoordW + TFrac
-                                             + 3 * `RPU_UW(UnitFrac))
-                           + `RPU_FRDW + 2 * `RPU_FGDW,
-  parameter integer SurfDW = PrimW + 6 * CoordW + `RPU_R2W(CoordW) + 9 * (SurfW + 2) + 7
-                           + 2 * SurfW + AngleW + 2 * (SurfW + 2) + `RPU_SDW(SurfW),
-  parameter integer DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)
+`include "rpu_top_params.vh"
 ) (
   input  wire                clk_i,
   input  wire                rst_ni,
@@ -134,15 +98,13 @@ module rpu_top #(
 `include "rpu_surf_desc.vh"
 `include "rpu_mul_latency.vh"
 `include "rpu_surface_latency.vh"
-  // The search ring of the surface path: its period and the passes of an item (the top's proof
-  // abstracts the surface unit, and its admission with it, to a ring of 3 cycles and 3 passes;
-  // rpu_surface_admit has its own proof at any period).
-`ifdef RPU_FORMAL_TOP
-  localparam integer SfPeriod = 3;
-  localparam integer SfPasses = 3;
-`else
+  // The search ring of the surface path: its period and the passes of an item.
+`ifndef RPU_FORMAL_TOP
   localparam integer SfPeriod = rpu_surface_pass_latency(SurfW, AngleW, N);
   localparam integer SfPasses = rpu_surface_passes(N, N1, N1First, Indicators);
+`endif
+`ifdef FORMAL
+`include "rpu_top_formal_decl.vh"
 `endif
 
   initial begin
@@ -178,18 +140,10 @@ module rpu_top #(
   // ---- input: a skid register, so item_ready_o is a flip-flop ----
   wire           in_valid, in_ready;
   wire [ItW-1:0] in_item;
-`ifdef FORMAL
-  wire [1:0]       f_in_cnt;   // the formal block's view of the queues (rpu_skid, rpu_fifo)
-  wire [2*ItW-1:0] f_in_ent;
-`endif
   rpu_skid #(.W(ItW)) u_in (
     .clk_i, .rst_ni, .valid_i(item_valid_i), .ready_o(item_ready_o),
     .data_i({item_piece_i, item_surf_i, item_last_i, item_id_i, item_i_i, item_j_i, item_seg_i}),
-    .valid_o(in_valid), .ready_i(in_ready), .data_o(in_item)
-`ifdef FORMAL
-    , .f_count_o(f_in_cnt), .f_entries_o(f_in_ent)
-`endif
-  );
+    .valid_o(in_valid), .ready_i(in_ready), .data_o(in_item) `RPU_F_QUEUE(f_in_cnt, f_in_ent));
   wire in_surf = in_item[ItSurfO];
 
   // ---- admission: credits for every item in flight or waiting in an output FIFO, and a slot of
@@ -218,24 +172,19 @@ module rpu_top #(
   endgenerate
 
   // ---- stage 0: read the segment descriptor ----
-  reg             v0_q;
-  reg [ItW-1:0]   item_q;
-  reg [SegW-1:0]  seg_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) v0_q <= 1'b0;
-    else         v0_q <= accept;
-  end
-  always @(posedge clk_i) begin
-    item_q <= in_item;
-    seg_q  <= seg_mem[in_item[ItSegO +: SegAddrW]];
-  end
+  wire           v0_q;
+  wire [ItW-1:0] item_q;
+  reg [SegW-1:0] seg_q;
+  rpu_stage #(.W(ItW)) u_stage0 (
+    .clk_i, .rst_ni, .valid_i(accept), .d_i(in_item), .valid_o(v0_q), .q_o(item_q));
+  always @(posedge clk_i) seg_q <= seg_mem[in_item[ItSegO +: SegAddrW]];
 
   // ---- ray generator; the item and its descriptor ride along ----
   wire [IdxW-1:0] it_i = item_q[ItIO +: IdxW];
   wire [IdxW-1:0] it_j = item_q[ItJO +: IdxW];
   wire            rg_valid;
-  wire [3*(4+DirFrac)-1:0] rg_v_unused;
-  wire [3*(2+DirFrac)-1:0] rg_vhat;
+  wire [3*`RPU_VW(DirFrac)-1:0] rg_v_unused;
+  wire [3*`RPU_VHATW(DirFrac)-1:0] rg_vhat;
   wire [3*EoW-1:0] rg_el, rg_er, rg_et, rg_eb;
   wire [ItW+SegW-1:0] rg_tag;
 `ifdef RPU_FORMAL_TOP
@@ -422,17 +371,12 @@ module rpu_top #(
   reg [SfSpW-1:0] sf_sp_q;
   always @(posedge clk_i) sf_sp_q <= {sp_pred1, sp_a, sp_b, sp_ab, sp_ovf};
 `endif
-  reg                sf_v_q;
-  reg [ItW-1:0]      sf_it_q;
-  reg [SurfDW-1:0]   sf_q;
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) sf_v_q <= 1'b0;
-    else         sf_v_q <= sf_src_v;
-  end
-  always @(posedge clk_i) begin
-    sf_it_q   <= sf_src_it;
-    sf_q      <= surf_mem[sf_src_it[ItSegO +: SurfAddrW]];
-  end
+  wire             sf_v_q;
+  wire [ItW-1:0]   sf_it_q;
+  reg [SurfDW-1:0] sf_q;
+  rpu_stage #(.W(ItW)) u_sf_stage (
+    .clk_i, .rst_ni, .valid_i(sf_src_v), .d_i(sf_src_it), .valid_o(sf_v_q), .q_o(sf_it_q));
+  always @(posedge clk_i) sf_q <= surf_mem[sf_src_it[ItSegO +: SurfAddrW]];
   wire             sf_valid, sf_ready_unused, sf_pv, sf_hit, sf_ovf;
   wire [1:0]       sf_pcs;
   wire [N-1:0]     sf_tau;
@@ -475,13 +419,9 @@ module rpu_top #(
   endgenerate
 `endif
   // X in the result's width (the curve point's): each component sign-extended.
-  wire [3*XW-1:0] sf_xw;
-  generate
-    for (c = 0; c < 3; c = c + 1) begin : g_sf_x
-      wire [CoordW-1:0] xc = sf_x[c*CoordW +: CoordW];
-      assign sf_xw[c*XW +: XW] = {{(XW-CoordW){xc[CoordW-1]}}, xc};
-    end
-  endgenerate
+  wire [3*XW-1:0] sf_xw = {{(XW-CoordW){sf_x[3*CoordW-1]}}, sf_x[2*CoordW +: CoordW],
+                           {(XW-CoordW){sf_x[2*CoordW-1]}}, sf_x[CoordW +: CoordW],
+                           {(XW-CoordW){sf_x[CoordW-1]}}, sf_x[0 +: CoordW]};
 
   // ---- output FIFOs: curve, texture and surface results, merged in input order ----
   // Result record: {item, texture, pieces, primitive, pred_1, ovf, τ, t, X, hit, depth}.
@@ -510,40 +450,22 @@ module rpu_top #(
   wire              head_valid = o_valid && (head_surf ? sf_fifo_valid
                                            : head_tex ? tx_fifo_valid : c_valid);
   wire              rs_ready;
-`ifdef FORMAL
-  wire [FifoLog2+1:0] f_c_cnt, f_t_cnt, f_s_cnt, f_o_cnt;
-  wire [((1<<FifoLog2)+1)*ResW-1:0] f_c_ent, f_t_ent, f_s_ent;
-  wire [((1<<FifoLog2)+1)*2-1:0]    f_o_ent;
-`endif
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_curve_fifo (
     .clk_i, .rst_ni, .wr_valid_i(cp_valid), .wr_ready_o(c_wr_ready_unused), .wr_data_i(cres),
     .rd_valid_o(c_valid), .rd_ready_i(pop && !head_surf && !head_tex), .rd_data_o(c_data)
-`ifdef FORMAL
-    , .f_count_o(f_c_cnt), .f_entries_o(f_c_ent)
-`endif
-  );
+    `RPU_F_QUEUE(f_c_cnt, f_c_ent));
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_texture_fifo (
     .clk_i, .rst_ni, .wr_valid_i(tx_valid), .wr_ready_o(tx_wr_ready_unused), .wr_data_i(tres),
     .rd_valid_o(tx_fifo_valid), .rd_ready_i(pop && head_tex), .rd_data_o(tx_data)
-`ifdef FORMAL
-    , .f_count_o(f_t_cnt), .f_entries_o(f_t_ent)
-`endif
-  );
+    `RPU_F_QUEUE(f_t_cnt, f_t_ent));
   rpu_fifo #(.Width(ResW), .Log2Depth(FifoLog2)) u_surface_fifo (
     .clk_i, .rst_ni, .wr_valid_i(sf_valid), .wr_ready_o(sf_wr_ready_unused), .wr_data_i(sres),
     .rd_valid_o(sf_fifo_valid), .rd_ready_i(pop && head_surf), .rd_data_o(sf_data)
-`ifdef FORMAL
-    , .f_count_o(f_s_cnt), .f_entries_o(f_s_ent)
-`endif
-  );
+    `RPU_F_QUEUE(f_s_cnt, f_s_ent));
   rpu_fifo #(.Width(2), .Log2Depth(FifoLog2)) u_order_fifo (
     .clk_i, .rst_ni, .wr_valid_i(v0_q), .wr_ready_o(o_wr_ready_unused),
     .wr_data_i({item_q[ItSurfO], seg_q[SegTexO] && !item_q[ItSurfO]}), .rd_valid_o(o_valid),
-    .rd_ready_i(pop), .rd_data_o(head_kind)
-`ifdef FORMAL
-    , .f_count_o(f_o_cnt), .f_entries_o(f_o_ent)
-`endif
-  );
+    .rd_ready_i(pop), .rd_data_o(head_kind) `RPU_F_QUEUE(f_o_cnt, f_o_ent));
   wire unused_fifo = ^{c_wr_ready_unused, tx_wr_ready_unused, sf_wr_ready_unused,
                        o_wr_ready_unused, sf_ready_unused};
   wire [ResW-1:0] head = head_surf ? sf_data : head_tex ? tx_data : c_data;

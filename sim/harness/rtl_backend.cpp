@@ -27,7 +27,7 @@ namespace {
 int g_rtl_fault = 0;
 }  // namespace
 
-// DPI import of rtl/curve/rpu_ip_step.v and rtl/top/rpu_resolve.v in the RPU_FAULT build.
+// DPI import of the fault-injected build's copies of rpu_ip_step and rpu_resolve (rtl_fault.cmake).
 extern "C" int rpu_fault() { return g_rtl_fault; }
 
 namespace rpu::sim {

@@ -94,7 +94,7 @@ if(TARGET rpu_sc)
   list(APPEND rtl_tests rtl_systemc_surf_mix)
 endif()
 
-# The comparison can fail: the argmin tie rule flipped in the RTL (RPU_FAULT_ARGMIN_TIE) must
+# The comparison can fail: the argmin tie rule flipped in the RTL (--rtl-fault, argmin-tie) must
 # give exit status 2 and a mismatch report naming the pixel, the item and the model's stages.
 add_test(NAME rtl_fault_is_caught COMMAND ${CMAKE_COMMAND} -DRPU=$<TARGET_FILE:rpu>
          "-DARGS=compare;builtin:curve12;--size;48x48;--n;8;--n1;1;--ip;iterative;--rtl-fault;--out;${RPU_CMP_OUT}/fault"
