@@ -109,6 +109,7 @@ struct HwParams {
   // rpu_top's port widths (rtl/rpu_top.v's derived parameters; sim/harness/rtl_types.h).
   int ray_dir_w() const { return kDirInt + dir_frac + kRayGuard; }  // VgW: v, dx, dy Q(4.FV+14)
   int point_w() const { return coord_w + 3; }             // XW: the curve point X
+  int ray_point_w() const { return coord_w + 2; }         // PRW: the ray point pr, a guide's g
   int guide_h_w() const { return coord_w + 5; }           // HW: a guide's h (or a, b)
   int r2_w() const { return 2 * coord_w + 1; }            // R2W: R² of the enclosing sphere
   int l2_w() const { return 2 * coord_w + 3; }            // L2W: L² = |d|²

@@ -19,7 +19,9 @@
 #include "scene/scene_json.h"
 
 // The hardware parameters a testbench is built with: the macros of its registration line
-// (sim/tests/<subsystem>/*.cmake, DEFS), else the HwParams defaults.
+// (sim/tests/<subsystem>/*.cmake: PARAMS -GName=v gives NAME=v, sim/CMakeLists.txt), else the
+// table's defaults (ref/model/hw_params.def; CTest rtl_params fails on a default here that
+// differs from the table's).
 #ifndef IP_N
 #define IP_N 16
 #endif
@@ -59,6 +61,9 @@
 #ifndef ANGLE_W
 #define ANGLE_W 20
 #endif
+#ifndef SURFACES
+#define SURFACES 1
+#endif
 #ifndef SURF_IND
 #define SURF_IND 0  // rpu_surface_ip's Indicators (0: 2^n1 − 1)
 #endif
@@ -90,6 +95,7 @@ inline ref::HwParams tb_params() {
   p.surf_w = SURF_W;
   p.angle_w = ANGLE_W;
   p.surf_n1_first = SURF_N1_FIRST;
+  p.surfaces = SURFACES != 0;
   p.validate();
   return p;
 }
@@ -100,6 +106,19 @@ inline scene::Scene demo_scene(const std::string& name) {
 }
 inline scene::CompiledScene compiled_demo_scene(const std::string& name) {
   return scene::compile_scene(demo_scene(name));
+}
+
+// A demo scene as the vector generators take it: compiled, and quantised at the build's
+// parameters (tb_params()). const auto [sc, p, m] = sim::quantized_demo_scene("curve12");
+struct QuantizedScene {
+  scene::CompiledScene sc;
+  ref::HwParams p;
+  ref::ModelScene m;
+};
+inline QuantizedScene quantized_demo_scene(const std::string& name) {
+  QuantizedScene q{compiled_demo_scene(name), tb_params(), {}};
+  q.m = ref::quantize_scene(q.sc, q.p);
+  return q;
 }
 
 // Narrow direction formats (DirFrac < 16): the compiler refuses a view whose pixel spans fewer

@@ -21,7 +21,7 @@ WVec3 curve_point_unit(const HwParams& p, const SegmentDesc& s, i128 t, i128 g1,
 }
 
 int curve_point_latency(const HwParams& p) {
-  const int gw = p.coord_w + 2, tw = p.t_w(), gkw = p.coord_w + 5;
+  const int gw = p.ray_point_w(), tw = p.t_w(), gkw = p.guide_h_w();
   return std::max(mul_latency(gw, tw + 1, true), mul_latency(gw, tw, true)) +
          mul_latency(p.unit_w(), gkw, true) + 1;
 }

@@ -29,7 +29,7 @@ PlanePoint ray_plane_unit(const HwParams& p, const CameraDesc& cam, const IVec3&
 }
 
 int ray_plane_latency(const HwParams& p) {
-  return p.coord_w + 5 + mul_latency(p.coord_w + 2, p.dir_w(), true) +
+  return p.coord_w + 5 + mul_latency(p.ray_point_w(), p.dir_w(), true) +
          mul_latency(p.diff_w(), p.edge_w(), true);
 }
 

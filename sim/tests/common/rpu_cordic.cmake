@@ -4,12 +4,10 @@
 # The default-width runs are opt-in (RPU_SIM_EXTRA, CI build time): in the default suite the
 # CORDICs at their product widths are checked inside rpu_indicator's testbench.
 rpu_verilated_test(tb_rpu_cordic_w8_vec TOP rpu_cordic TB tb/common/tb_rpu_cordic.cpp
-                   PARAMS -GW=8 -GAW=10 -GIters=8 -GMode=0 -GTagW=3
-                   DEFS CORDIC_W=8 CORDIC_AW=10 CORDIC_ITERS=8 CORDIC_MODE=0 TAG_W=3)
+                   PARAMS -GW=8 -GAW=10 -GIters=8 -GMode=0 -GTagW=3)
 rpu_verilated_test(tb_rpu_cordic_w8_rot TOP rpu_cordic TB tb/common/tb_rpu_cordic.cpp
-                   PARAMS -GW=8 -GAW=10 -GIters=8 -GMode=1 -GTagW=3
-                   DEFS CORDIC_W=8 CORDIC_AW=10 CORDIC_ITERS=8 CORDIC_MODE=1 TAG_W=3)
+                   PARAMS -GW=8 -GAW=10 -GIters=8 -GMode=1 -GTagW=3)
 rpu_verilated_test(tb_rpu_cordic_w32_vec EXTRA TOP rpu_cordic TB tb/common/tb_rpu_cordic.cpp
-                   PARAMS -GMode=0 DEFS CORDIC_W=32 CORDIC_AW=24 CORDIC_ITERS=24 CORDIC_MODE=0)
+                   PARAMS -GW=32 -GAW=24 -GIters=24 -GMode=0)
 rpu_verilated_test(tb_rpu_cordic_w32_rot EXTRA TOP rpu_cordic TB tb/common/tb_rpu_cordic.cpp
-                   PARAMS -GMode=1 DEFS CORDIC_W=32 CORDIC_AW=24 CORDIC_ITERS=24 CORDIC_MODE=1)
+                   PARAMS -GW=32 -GAW=24 -GIters=24 -GMode=1)

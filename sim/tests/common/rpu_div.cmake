@@ -3,11 +3,11 @@
 # 2^(2FV+2) / |v|) at the ray generator's configuration FV = 24: 51-bit dividend, 28-bit |v|,
 # FV + 3 quotient bits.
 rpu_verilated_test(tb_rpu_div_n10_d8_q10 TOP rpu_div TB tb/common/tb_rpu_div.cpp
-                   PARAMS -GNumW=10 -GDenW=8 -GQuotW=10 DEFS NUM_W=10 DEN_W=8 QUOT_W=10)
+                   PARAMS -GNumW=10 -GDenW=8 -GQuotW=10)
 rpu_verilated_test(tb_rpu_div_n16_d4_q8 EXTRA TOP rpu_div TB tb/common/tb_rpu_div.cpp
-                   PARAMS -GNumW=16 -GDenW=4 -GQuotW=8 DEFS NUM_W=16 DEN_W=4 QUOT_W=8)
+                   PARAMS -GNumW=16 -GDenW=4 -GQuotW=8)
 rpu_verilated_test(tb_rpu_div_n8_d8_q1 EXTRA TOP rpu_div TB tb/common/tb_rpu_div.cpp
-                   PARAMS -GNumW=8 -GDenW=8 -GQuotW=1 DEFS NUM_W=8 DEN_W=8 QUOT_W=1)
+                   PARAMS -GNumW=8 -GDenW=8 -GQuotW=1)
 rpu_verilated_test(tb_rpu_div_recip24 TOP rpu_div TB tb/common/tb_rpu_div.cpp
                    PARAMS -GNumW=51 -GDenW=28 -GQuotW=27 -GTagW=16
-                   DEFS NUM_W=51 DEN_W=28 QUOT_W=27 TAG_W=16 RECIP_FV=24)
+                   DEFS RECIP_FV=24)

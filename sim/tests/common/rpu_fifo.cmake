@@ -2,16 +2,16 @@
 # against ref::Fifo cycle for cycle and an order scoreboard; a narrow configuration (4 entries,
 # 1 bit: full and empty every few cycles) and a wide one (100-bit entries, 64 entries).
 rpu_verilated_test(tb_rpu_fifo_narrow TOP rpu_fifo TB tb/common/tb_rpu_fifo.cpp
-                   PARAMS -GWidth=1 -GLog2Depth=2 DEFS WIDTH=1 LOG2_DEPTH=2)
+                   PARAMS -GWidth=1 -GLog2Depth=2)
 rpu_verilated_test(tb_rpu_fifo_wide TOP rpu_fifo TB tb/common/tb_rpu_fifo.cpp
-                   PARAMS -GWidth=100 -GLog2Depth=6 DEFS WIDTH=100 LOG2_DEPTH=6)
+                   PARAMS -GWidth=100 -GLog2Depth=6)
 # Coverage smoke test (docs/verification.md, section 6): the narrow configuration once more,
 # Verilated with line and toggle coverage (the default build's only coverage model: a small one),
 # its data written and read by scripts/coverage_report.py, rpu_fifo at ≥ 95 % of its line points
 # and ≥ 90 % of its toggle bits (sim/scripts/coverage_smoke.cmake). The full measurement:
 # scripts/coverage.sh.
 rpu_verilated_test(tb_rpu_fifo_cov COVERAGE NOTEST TOP rpu_fifo TB tb/common/tb_rpu_fifo.cpp
-                   PARAMS -GWidth=1 -GLog2Depth=2 DEFS WIDTH=1 LOG2_DEPTH=2)
+                   PARAMS -GWidth=1 -GLog2Depth=2)
 if(TARGET tb_rpu_fifo_cov)
   find_program(RPU_VERILATOR_COVERAGE verilator_coverage)
   add_test(NAME coverage_smoke

@@ -7,27 +7,23 @@
 # sides at 10 × 6 signed and 7 × 9 unsigned (narrow tiles of 1 bit); opt-in, 28 × 28 signed
 # padded to a latency of 6 and one tile (25 × 18 signed).
 rpu_verilated_test(tb_rpu_mul_7x6s TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2
-                   DEFS A_W=7 B_W=6 SIGNED=1 CHUNK_A=3 CHUNK_B=2)
+                   PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2)
 rpu_verilated_test(tb_rpu_mul_7x6s_dsp TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2 -GLutTile=0
-                   DEFS A_W=7 B_W=6 SIGNED=1 CHUNK_A=3 CHUNK_B=2)
+                   PARAMS -GAW=7 -GBW=6 -GSigned=1 -GChunkA=3 -GChunkB=2 -GLutTile=0)
 rpu_verilated_test(tb_rpu_mul_22x22s TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=22 -GBW=22 -GSigned=1 DEFS A_W=22 B_W=22 SIGNED=1)
+                   PARAMS -GAW=22 -GBW=22 -GSigned=1)
 rpu_verilated_test(tb_rpu_mul_34x28s TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=34 -GBW=28 -GSigned=1 -GSwapSides=1 DEFS A_W=34 B_W=28 SIGNED=1)
+                   PARAMS -GAW=34 -GBW=28 -GSigned=1 -GSwapSides=1)
 rpu_verilated_test(tb_rpu_mul_10x6s_swap TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
                    PARAMS -GAW=10 -GBW=6 -GSigned=1 -GChunkA=4 -GChunkB=3 -GLutTile=1
-                   -GSwapSides=1 DEFS A_W=10 B_W=6 SIGNED=1 CHUNK_A=4 CHUNK_B=3)
+                   -GSwapSides=1)
 rpu_verilated_test(tb_rpu_mul_7x9u_swap TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
                    PARAMS -GAW=7 -GBW=9 -GSigned=0 -GChunkA=5 -GChunkB=3 -GLutTile=1
-                   -GSwapSides=1 DEFS A_W=7 B_W=9 SIGNED=0 CHUNK_A=5 CHUNK_B=3)
+                   -GSwapSides=1)
 rpu_verilated_test(tb_rpu_mul_7x6u TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=7 -GBW=6 -GSigned=0 -GChunkA=3 -GChunkB=2
-                   DEFS A_W=7 B_W=6 SIGNED=0 CHUNK_A=3 CHUNK_B=2)
+                   PARAMS -GAW=7 -GBW=6 -GSigned=0 -GChunkA=3 -GChunkB=2)
 rpu_verilated_test(tb_rpu_mul_51x23u TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=51 -GBW=23 -GSigned=0 DEFS A_W=51 B_W=23 SIGNED=0)
+                   PARAMS -GAW=51 -GBW=23 -GSigned=0)
 rpu_verilated_test(tb_rpu_mul_28x28s EXTRA TOP rpu_mul TB tb/common/tb_rpu_mul.cpp
-                   PARAMS -GAW=28 -GBW=28 -GSigned=1 -GLatency=6
-                   DEFS A_W=28 B_W=28 SIGNED=1 LATENCY=6)
+                   PARAMS -GAW=28 -GBW=28 -GSigned=1 -GLatency=6)
 rpu_verilated_test(tb_rpu_mul_25x18s EXTRA TOP rpu_mul TB tb/common/tb_rpu_mul.cpp)

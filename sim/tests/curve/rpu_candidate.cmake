@@ -3,11 +3,8 @@
 # step's offsets (Fo = 20) with the seed's metric, the narrowest (Fo = 14, step 0) squared, and
 # the iterative form's run-time Fo (8..20 per item) with the seed's metric.
 rpu_verilated_test(tb_rpu_candidate TOP rpu_candidate TB tb/curve/tb_rpu_candidate.cpp
-                   PARAMS -GFo=20
-                   DEFS FO=20)
+                   PARAMS -GFo=20)
 rpu_verilated_test(tb_rpu_candidate_sq TOP rpu_candidate TB tb/curve/tb_rpu_candidate.cpp
-                   PARAMS -GMetric=1 -GFo=14
-                   DEFS METRIC=1 FO=14)
+                   PARAMS -GMetric=1 -GFo=14)
 rpu_verilated_test(tb_rpu_candidate_fo TOP rpu_candidate TB tb/curve/tb_rpu_candidate.cpp
-                   PARAMS -GFo=0
-                   DEFS FO=0)
+                   PARAMS -GFo=0)

@@ -5,8 +5,8 @@ rpu_verilated_test(tb_rpu_curve_point TOP rpu_curve_point TB tb/curve/tb_rpu_cur
 rpu_verilated_test(tb_rpu_curve_point_w40 EXTRA TOP rpu_curve_point
                    TB tb/curve/tb_rpu_curve_point.cpp
                    PARAMS -GCoordW=40 -GTFrac=43 -GUnitFrac=40
-                   DEFS COORD_W=40 T_FRAC=43 UNIT_FRAC=40 VECTORS=20000)
+                   DEFS VECTORS=20000)
 rpu_verilated_test(tb_rpu_curve_point_w16 EXTRA TOP rpu_curve_point
                    TB tb/curve/tb_rpu_curve_point.cpp
                    PARAMS -GCoordW=16 -GTFrac=12 -GUnitFrac=8 -GTagW=3
-                   DEFS COORD_W=16 T_FRAC=12 UNIT_FRAC=8 TAG_W=3 VECTORS=20000)
+                   DEFS VECTORS=20000)

@@ -4,4 +4,4 @@ rpu_verilated_test(tb_rpu_frame TOP rpu_frame TB tb/curve/tb_rpu_frame.cpp)
 # At n = 24 the flat guides' w needs a third tile in its high half (rtl/curve/rpu_frame.v,
 # "Both halves run at the slower one's latency"); below n = 24 the two halves have two each.
 rpu_verilated_test(tb_rpu_frame_n24 TOP rpu_frame TB tb/curve/tb_rpu_frame.cpp
-                   PARAMS -GN=24 DEFS IP_N=24)
+                   PARAMS -GN=24)

@@ -4,14 +4,14 @@
 # with TFrac 43, L2·w = 126 bits; narrowest: CoordW 12, TFrac 8, SqrtW 16, a 3-bit tag). The
 # default run's 40-bit tag waits in the unit's rpu_tag_queue (32 bits or more), the others ride.
 rpu_verilated_test(tb_rpu_guide_pair TOP rpu_guide_pair TB tb/curve/tb_rpu_guide_pair.cpp
-                   PARAMS -GHhIn=1 -GTagW=40 DEFS VECTORS=100000 HH_IN=1 TAG_W=40)
+                   PARAMS -GHhIn=1 -GTagW=40 DEFS VECTORS=100000)
 rpu_verilated_test(tb_rpu_guide_pair_hh0 EXTRA TOP rpu_guide_pair TB tb/curve/tb_rpu_guide_pair.cpp
-                   PARAMS -GHhIn=0 DEFS VECTORS=50000 HH_IN=0)
+                   PARAMS -GHhIn=0 DEFS VECTORS=50000)
 rpu_verilated_test(tb_rpu_guide_pair_s40 EXTRA TOP rpu_guide_pair TB tb/curve/tb_rpu_guide_pair.cpp
-                   PARAMS -GHhIn=1 -GSqrtW=40 DEFS HH_IN=1 SQRT_W=40 VECTORS=20000)
+                   PARAMS -GHhIn=1 -GSqrtW=40 DEFS VECTORS=20000)
 rpu_verilated_test(tb_rpu_guide_pair_w40 EXTRA TOP rpu_guide_pair TB tb/curve/tb_rpu_guide_pair.cpp
                    PARAMS -GHhIn=1 -GCoordW=40 -GTFrac=43
-                   DEFS HH_IN=1 COORD_W=40 T_FRAC=43 VECTORS=20000)
+                   DEFS VECTORS=20000)
 rpu_verilated_test(tb_rpu_guide_pair_w12 EXTRA TOP rpu_guide_pair TB tb/curve/tb_rpu_guide_pair.cpp
                    PARAMS -GHhIn=1 -GCoordW=12 -GTFrac=8 -GSqrtW=16 -GTagW=3
-                   DEFS HH_IN=1 COORD_W=12 T_FRAC=8 SQRT_W=16 TAG_W=3 VECTORS=20000)
+                   DEFS VECTORS=20000)

@@ -3,11 +3,10 @@
 rpu_verilated_test(tb_rpu_ip EXTRA TOP rpu_ip TB tb/curve/tb_rpu_ip.cpp
                    PARAMS -GCtxW=32)
 rpu_verilated_test(tb_rpu_ip_iter_n8_n1_4 TOP rpu_ip TB tb/curve/tb_rpu_ip.cpp
-                   PARAMS -GCtxW=32 -GUnrolled=0 -GN=8 -GN1=4
-                   DEFS UNROLLED=0 IP_N=8 IP_N1=4)
+                   PARAMS -GCtxW=32 -GUnrolled=0 -GN=8 -GN1=4)
 # rpu_ip_step (forward differences in the chord's frame) on the model's intermediate states: the
 # iterative form (k per item) in the default suite, an unrolled step (k = 5) opt-in.
 rpu_verilated_test(tb_rpu_ip_step TOP rpu_ip_step TB tb/curve/tb_rpu_ip_step.cpp
-                   PARAMS -GStep=0 DEFS STEP=0)
+                   PARAMS -GStep=0)
 rpu_verilated_test(tb_rpu_ip_step_k5 EXTRA TOP rpu_ip_step TB tb/curve/tb_rpu_ip_step.cpp
-                   PARAMS -GStep=5 DEFS STEP=5)
+                   PARAMS -GStep=5)

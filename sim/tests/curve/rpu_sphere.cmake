@@ -3,10 +3,8 @@
 # The default run's 40-bit tag waits in the unit's rpu_tag_queue (32 bits or more); the narrow
 # set's 8-bit tag rides the stages.
 rpu_verilated_test(tb_rpu_chord TOP rpu_chord TB tb/curve/tb_rpu_chord.cpp
-                   PARAMS -GTagW=8 DEFS TAG_W=8)
+                   PARAMS -GTagW=8)
 rpu_verilated_test(tb_rpu_sphere TOP rpu_sphere TB tb/curve/tb_rpu_sphere.cpp
-                   PARAMS -GTagW=40
-                   DEFS TAG_W=40)
+                   PARAMS -GTagW=40)
 rpu_verilated_test(tb_rpu_sphere_cw16_s32 EXTRA TOP rpu_sphere TB tb/curve/tb_rpu_sphere.cpp
-                   PARAMS -GCoordW=16 -GDirFrac=20 -GTFrac=20 -GInvW=16 -GSqrtW=32 -GTagW=8
-                   DEFS TAG_W=8 COORD_W=16 DIR_FRAC=20 T_FRAC=20 INV_W=16 SQRT_W=32)
+                   PARAMS -GCoordW=16 -GDirFrac=20 -GTFrac=20 -GInvW=16 -GSqrtW=32 -GTagW=8)

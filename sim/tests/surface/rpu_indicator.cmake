@@ -5,8 +5,6 @@
 # 8-bit tag) and, opt-in (RPU_SIM_EXTRA, to keep the default build's Verilated C++ small), a
 # narrow one (LW 18, AW 14, 6 lanes, 3-bit tag).
 rpu_verilated_test(tb_rpu_indicator TOP rpu_indicator TB tb/surface/tb_rpu_indicator.cpp
-                   PARAMS -GTagW=8
-                   DEFS TAG_W=8)
+                   PARAMS -GTagW=8)
 rpu_verilated_test(tb_rpu_indicator_lw18 EXTRA TOP rpu_indicator TB tb/surface/tb_rpu_indicator.cpp
-                   PARAMS -GSurfW=18 -GAngleW=14 -GLanes=6 -GTagW=3
-                   DEFS SURF_W=18 ANGLE_W=14 LANES=6 TAG_W=3)
+                   PARAMS -GSurfW=18 -GAngleW=14 -GLanes=6 -GTagW=3)

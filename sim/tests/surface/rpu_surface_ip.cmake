@@ -14,20 +14,14 @@
 rpu_verilated_test(tb_rpu_surface_ip_iter_lw18 TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
                    PARAMS -GUnrolled=0 -GSurfW=18 -GAngleW=14 -GTurns=6 -GN=8 -GN1=2 -GN1First=5
-                          -GIndicators=2 -GCtxW=24
-                   DEFS UNROLLED=0 SURF_W=18 ANGLE_W=14 TURNS=6 IP_N=8 IP_N1=2 SURF_N1_FIRST=5
-                        SURF_IND=2 CTX_W=24)
+                          -GIndicators=2 -GCtxW=24)
 rpu_verilated_test(tb_rpu_surface_ip_unrolled_lw18 EXTRA TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
                    PARAMS -GUnrolled=1 -GSurfW=18 -GAngleW=14 -GTurns=6 -GN=6 -GN1=3 -GN1First=4
-                          -GCtxW=24
-                   DEFS UNROLLED=1 SURF_W=18 ANGLE_W=14 TURNS=6 IP_N=6 IP_N1=3 SURF_N1_FIRST=4
-                        CTX_W=24)
+                          -GCtxW=24)
 rpu_verilated_test(tb_rpu_surface_ip_iter_n8_n1_1 EXTRA TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
-                   PARAMS -GUnrolled=0 -GN=8 -GN1=1 -GCtxW=24
-                   DEFS UNROLLED=0 IP_N=8 IP_N1=1 CTX_W=24)
+                   PARAMS -GUnrolled=0 -GN=8 -GN1=1 -GCtxW=24)
 rpu_verilated_test(tb_rpu_surface_ip_iter_seed EXTRA TOP rpu_surface_ip
                    TB tb/surface/tb_rpu_surface_ip.cpp
-                   PARAMS -GUnrolled=0 -GN1First=0 -GCtxW=24
-                   DEFS UNROLLED=0 SURF_N1_FIRST=0 CTX_W=24)
+                   PARAMS -GUnrolled=0 -GN1First=0 -GCtxW=24)

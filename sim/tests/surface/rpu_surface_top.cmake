@@ -6,11 +6,9 @@
 # rpu_surface_ip alone: rpu_surface_ip.cmake. Opt-in (-DRPU_SIM_EXTRA=ON): about 1.5 CPU-minutes
 # of Verilated C++ and a minute of run.
 rpu_verilated_test(tb_rpu_surface_top EXTRA TOP rpu_surface_top TB tb/surface/tb_rpu_surface_top.cpp
-                   PARAMS -GTagW=16
-                   DEFS TAG_W=16 UNROLLED=0)
+                   PARAMS -GTagW=16 -GUnrolled=0)
 # In the default suite: the whole surface path at narrow widths, iterative (LW 18, AW 14,
 # n = 6, n1 = 3, first step 4 bits, 2 indicators: 9 + 2 = 11 passes per item).
 rpu_verilated_test(tb_rpu_surface_top_lw18 TOP rpu_surface_top TB tb/surface/tb_rpu_surface_top.cpp
-                   PARAMS -GTagW=16 -GSurfW=18 -GAngleW=14 -GN=6 -GN1=3 -GN1First=4 -GIndicators=2
-                   DEFS TAG_W=16 UNROLLED=0 SURF_W=18 ANGLE_W=14 IP_N=6 IP_N1=3 SURF_N1_FIRST=4
-                        SURF_IND=2)
+                   PARAMS -GTagW=16 -GUnrolled=0 -GSurfW=18 -GAngleW=14 -GN=6 -GN1=3 -GN1First=4
+                          -GIndicators=2)

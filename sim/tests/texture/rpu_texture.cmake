@@ -7,18 +7,13 @@
 # pixels: the compiler refuses finer ones at DirFrac 12), the texture unit
 # with pre-shifted guide roots (SqrtW 40; CoordW 16 with SqrtW 32 and a 3-bit tag).
 rpu_verilated_test(tb_rpu_ray_plane TOP rpu_ray_plane TB tb/texture/tb_rpu_ray_plane.cpp
-                   PARAMS -GTagW=40
-                   DEFS TAG_W=40)
+                   PARAMS -GTagW=40)
 rpu_verilated_test(tb_rpu_ray_plane_cw16_fv12 EXTRA TOP rpu_ray_plane
                    TB tb/texture/tb_rpu_ray_plane.cpp
-                   PARAMS -GCoordW=16 -GDirFrac=12 -GEdgeFrac=12
-                   DEFS COORD_W=16 DIR_FRAC=12 EDGE_FRAC=12)
+                   PARAMS -GCoordW=16 -GDirFrac=12 -GEdgeFrac=12)
 rpu_verilated_test(tb_rpu_texture TOP rpu_texture TB tb/texture/tb_rpu_texture.cpp
-                   PARAMS -GTagW=8
-                   DEFS TAG_W=8)
+                   PARAMS -GTagW=8)
 rpu_verilated_test(tb_rpu_texture_s40 EXTRA TOP rpu_texture TB tb/texture/tb_rpu_texture.cpp
-                   PARAMS -GSqrtW=40
-                   DEFS SQRT_W=40)
+                   PARAMS -GSqrtW=40)
 rpu_verilated_test(tb_rpu_texture_cw16_s32 EXTRA TOP rpu_texture TB tb/texture/tb_rpu_texture.cpp
-                   PARAMS -GCoordW=16 -GTFrac=20 -GUnitFrac=12 -GInvW=16 -GSqrtW=32 -GTagW=3
-                   DEFS COORD_W=16 T_FRAC=20 UNIT_FRAC=12 INV_W=16 SQRT_W=32 TAG_W=3)
+                   PARAMS -GCoordW=16 -GTFrac=20 -GUnitFrac=12 -GInvW=16 -GSqrtW=32 -GTagW=3)

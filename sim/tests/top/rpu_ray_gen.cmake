@@ -6,8 +6,7 @@
 # (random edge vectors over the port range, directions within the header's preconditions, and
 # v·v = k² − 1).
 rpu_verilated_test(tb_rpu_ray_gen TOP rpu_ray_gen TB tb/top/tb_rpu_ray_gen.cpp
-                   PARAMS -GTagW=40
-                   DEFS DIR_FRAC=24 EDGE_FRAC=16 IDX_W=14 TAG_W=40 RAYGEN_FULL=1)
+                   PARAMS -GTagW=40 -GDirFrac=24 -GEdgeFrac=16 -GIdxW=14
+                   DEFS RAYGEN_FULL=1)
 rpu_verilated_test(tb_rpu_ray_gen_fv12_fe12 EXTRA TOP rpu_ray_gen TB tb/top/tb_rpu_ray_gen.cpp
-                   PARAMS -GDirFrac=12 -GEdgeFrac=12
-                   DEFS DIR_FRAC=12 EDGE_FRAC=12 IDX_W=14)
+                   PARAMS -GDirFrac=12 -GEdgeFrac=12 -GIdxW=14)

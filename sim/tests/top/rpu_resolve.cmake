@@ -4,7 +4,6 @@
 # (128-bit depths, 31-bit ids, 64-bit pixels) is opt-in.
 rpu_verilated_test(tb_rpu_resolve TOP rpu_resolve TB tb/top/tb_rpu_resolve.cpp)
 rpu_verilated_test(tb_rpu_resolve_narrow EXTRA TOP rpu_resolve TB tb/top/tb_rpu_resolve.cpp
-                   PARAMS -GPixW=6 -GDepthW=20 -GPrimW=3 DEFS PIX_W=6 DEPTH_W=20 PRIM_W=3)
+                   PARAMS -GPixW=6 -GDepthW=20 -GPrimW=3)
 rpu_verilated_test(tb_rpu_resolve_wide EXTRA TOP rpu_resolve TB tb/top/tb_rpu_resolve.cpp
-                   PARAMS -GPixW=64 -GDepthW=128 -GPrimW=31
-                   DEFS PIX_W=64 DEPTH_W=128 PRIM_W=31)
+                   PARAMS -GPixW=64 -GDepthW=128 -GPrimW=31)
