@@ -189,12 +189,7 @@ class VerilatedAxiPorts final : public AxiHost {
            top_->m_res_tlast_o, res_beats_, res_nbeats_, res_bits_,
            res_seen_, frame_items_, "item result");
     }
-    top_->clk_i = 0;
-    top_->eval();
-    ctx_->timeInc(1);
-    top_->clk_i = 1;
-    top_->eval();
-    ctx_->timeInc(1);
+    m_.tick();
     ++clock_;
     if (fw_.started && !fw_.done && !irq_before && top_->irq_o) {
       fw_.done = true;
@@ -286,15 +281,10 @@ class VerilatedAxiPorts final : public AxiHost {
   };
 
   void idle_inputs() {
-    top_->s_axil_awvalid_i = 0;
-    top_->s_axil_wvalid_i = 0;
-    top_->s_axil_bready_i = 0;
-    top_->s_axil_arvalid_i = 0;
-    top_->s_axil_rready_i = 0;
-    top_->s_item_tvalid_i = 0;
-    top_->s_item_tlast_i = 0;
-    top_->m_pix_tready_i = 0;
-    top_->m_res_tready_i = 0;
+    top_->s_axil_awvalid_i = top_->s_axil_wvalid_i = top_->s_axil_arvalid_i = 0;  // no request
+    top_->s_axil_bready_i = top_->s_axil_rready_i = 0;
+    top_->s_item_tvalid_i = top_->s_item_tlast_i = 0;                           // no item beat
+    top_->m_pix_tready_i = top_->m_res_tready_i = 0;                            // nothing taken
   }
   // During an AXI4-Lite access: no output beat taken; an item beat already raised stays.
   void quiet_streams() {

@@ -23,33 +23,39 @@ std::string vec(const ref::IVec3& v) {
   return "(" + dec(v.x) + ", " + dec(v.y) + ", " + dec(v.z) + ")";
 }
 
-ItemResult curve_result(const ref::PairResult& r) {
+// A result's point X from the model's vector.
+template <class V>
+void set_x(ItemResult& e, const V& x) {
+  e.X[0] = x.x;
+  e.X[1] = x.y;
+  e.X[2] = x.z;
+}
+
+// The fields a curve pair's and a surface piece's results share: hit, overflow, depth, τ, X.
+template <class R>
+ItemResult hit_result(const R& r) {
   ItemResult e;
-  e.pred1 = r.interval.pred1;
   e.hit = r.hit;
   e.overflow = r.overflow;
   e.depth = r.depth;
   e.tau = r.tau;
+  set_x(e, r.X);
+  return e;
+}
+
+ItemResult curve_result(const ref::PairResult& r) {
+  ItemResult e = hit_result(r);
+  e.pred1 = r.interval.pred1;
   e.t = r.t;
-  e.X[0] = r.X.x;
-  e.X[1] = r.X.y;
-  e.X[2] = r.X.z;
   return e;
 }
 
 // A surface piece's expected result: the piece's valid bit is pred_1, t stays 0.
 ItemResult surface_result(const ref::SurfacePieceResult& r) {
-  ItemResult e;
+  ItemResult e = hit_result(r);
   e.surface = true;
   e.pieces = r.pieces;
   e.pred1 = r.valid;
-  e.hit = r.hit;
-  e.overflow = r.overflow;
-  e.depth = r.depth;
-  e.tau = r.tau;
-  e.X[0] = r.X.x;
-  e.X[1] = r.X.y;
-  e.X[2] = r.X.z;
   return e;
 }
 
@@ -187,9 +193,7 @@ FrameSchedule schedule_frame(const scene::CompiledScene& sc, const ref::ModelSce
               e.overflow = flag.flag;
               e.depth = pp.depth;
               e.t = t.t;
-              e.X[0] = t.X.x;
-              e.X[1] = t.X.y;
-              e.X[2] = t.X.z;
+              set_x(e, t.X);
               row.items.push_back({0, i, j, e.seg, false, true});
               row.expected.push_back(e);
             };

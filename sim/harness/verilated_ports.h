@@ -4,11 +4,7 @@
 #pragma once
 
 #include <verilated.h>
-#if VM_TRACE_FST
-#include <verilated_fst_c.h>
-#endif
 
-#include "coverage_file.h"
 #include "port_bits.h"
 #include "top_ports.h"
 #include "verilated_model.h"
@@ -21,12 +17,8 @@ class VerilatedPorts final : public TopPorts {
  public:
   VerilatedPorts(const ref::HwParams& p, std::uint64_t x_seed) : w_(p), m_(x_seed) {
     top_->rst_ni = 0;
-    top_->cam_we_i = 0;
-    top_->seg_we_i = 0;
-    top_->surf_we_i = 0;
-    top_->item_valid_i = 0;
-    top_->res_ready_i = 0;
-    top_->pix_ready_i = 0;
+    top_->cam_we_i = top_->seg_we_i = top_->surf_we_i = 0;          // no descriptor write
+    top_->item_valid_i = top_->res_ready_i = top_->pix_ready_i = 0;  // no item, nothing taken
   }
   ~VerilatedPorts() override { finish(); }
 
@@ -96,34 +88,11 @@ class VerilatedPorts final : public TopPorts {
     p.primitive = top_->pix_prim_o;
     return p;
   }
-  void tick() override {
-    top_->clk_i = 0;
-    top_->eval();
-    dump();
-    ctx_->timeInc(1);
-    top_->clk_i = 1;
-    top_->eval();
-    dump();
-    ctx_->timeInc(1);
-  }
+  void tick() override { m_.tick(); }
   void trace(const std::string& fst_path) override {
-#if VM_TRACE_FST
-    if constexpr (Traced) {
-      ctx_->traceEverOn(true);
-      fst_ = std::make_unique<VerilatedFstC>();
-      top_->trace(fst_.get(), 99);
-      fst_->open(fst_path.c_str());
-      return;
-    }
-#endif
-    (void)fst_path;
+    if constexpr (Traced) m_.open_trace(fst_path);
   }
-  void finish() override {
-    if (!m_.finish()) return;
-#if VM_TRACE_FST
-    if (fst_) fst_->close();
-#endif
-  }
+  void finish() override { m_.finish(); }
 
  private:
   // One clock with a descriptor RAM's write enable high.
@@ -135,18 +104,10 @@ class VerilatedPorts final : public TopPorts {
     tick();
     we_port = 0;
   }
-  void dump() {
-#if VM_TRACE_FST
-    if (fst_) fst_->dump(ctx_->time());
-#endif
-  }
   TopWidths w_;
   VerilatedModel<V> m_;
   VerilatedContext* const ctx_ = m_.ctx.get();
   V* const top_ = m_.top.get();
-#if VM_TRACE_FST
-  std::unique_ptr<VerilatedFstC> fst_;
-#endif
 };
 
 }  // namespace rpu::sim

@@ -2,14 +2,16 @@
 // owns the model, the clock, the reset and the trace) and verilog-axis's stream source and sink
 // (random idle cycles on the valid side, random backpressure on the ready side):
 //
-//   Testbench<Top> tb("tb_rpu_x", argc, argv);  the Verilated context and model, every register
+//   Testbench<Top> tb("tb_rpu_x", argc, argv);  the Verilated context and model (one
+//       VerilatedModel, harness/verilated_model.h, as the co-simulation's ports), every register
 //       random at power-up (--x-initial unique, RPU_X_SEED), the seed (RPU_SEED) of tb.rng, the
 //       vector count (tb.vectors(default), RPU_VECTORS), clock (tick), reset, the FST trace on
 //       request (+trace, or RPU_TRACE=1: each failing test keeps <test>.fst in RPU_TRACE_DIR or
 //       the working directory), FAILURE lines (fail) and the "matched N items" line (pass, with
 //       the longest latency of run()'s items); in a coverage build, the model's line and toggle
 //       coverage into RPU_COVERAGE_DIR (harness/coverage_file.h: the counts after the first reset
-//       and at the end).
+//       and at the end); with RPU_VECTOR_HASH=file, one line a run: the hash of every matched
+//       item's inputs and expected outputs (a refactor that keeps the vectors keeps the lines).
 //   tb.run(items, stream)  plays a list of items through a valid_i/valid_o unit (reset first)
 //       and checks every result, in order, against its item: the source offers the next item with
 //       random gaps (junk on every input in between), holds it until ready_o takes it where the
@@ -26,11 +28,9 @@
 #pragma once
 
 #include <verilated.h>
-#if VM_TRACE_FST
-#include <verilated_fst_c.h>
-#endif
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -42,9 +42,9 @@
 #include <string>
 #include <vector>
 
-#include "coverage_file.h"
 #include "port_bits.h"
 #include "tb_common.h"
+#include "verilated_model.h"
 
 namespace rpu::sim {
 
@@ -59,6 +59,18 @@ inline std::uint64_t test_seed(const char* name, std::uint64_t fallback = 202611
   std::printf("%s: seed %llu (set RPU_SEED to reproduce another)\n", name,
               static_cast<unsigned long long>(seed));
   return seed;
+}
+
+// printf-style text (the FAILURE and "matched" lines' details).
+inline std::string vformat(const char* fmt, std::va_list ap) {
+  std::va_list count;
+  va_copy(count, ap);
+  const int n = std::vsnprintf(nullptr, 0, fmt, count);
+  va_end(count);
+  if (n <= 0) return {};
+  std::string s(static_cast<size_t>(n), '\0');
+  std::vsnprintf(s.data(), s.size() + 1, fmt, ap);
+  return s;
 }
 
 // The input fields of an item, named once: the base calls the testbench's list to drive an item,
@@ -157,6 +169,13 @@ class Outputs {
   }
   bool ok() const { return differs_.empty(); }
   const std::string& differs() const { return differs_; }
+  // The expected values, named (the vector record of RPU_VECTOR_HASH).
+  std::string expected() const {
+    std::string t;
+    for (const Field& f : fields_)
+      t.append(f.name).append(f.care ? "=" : "~").append(text(f.want, f.n)).append(" ");
+    return t;
+  }
   // Every field read (a held output must keep them).
   std::vector<u128> read() const {
     std::vector<u128> v;
@@ -264,30 +283,14 @@ class Testbench {
         seed(test_seed(name)),
         rng(seed),
         drive_rng_(seed ^ 0x9E3779B97F4A7C15ull),
-        coverage_(argc > 0 ? std::filesystem::path(argv[0]).filename().string() : name) {
-    const std::uint64_t x_seed = env_u64("RPU_X_SEED", 20261122);
-    std::printf("%s: initial register values from x-seed %llu (set RPU_X_SEED for others)\n",
-                name, static_cast<unsigned long long>(x_seed));
-    ctx_ = std::make_unique<VerilatedContext>();
-    ctx_->randReset(2);  // every register random at power-up (the model is --x-initial unique)
-    ctx_->randSeed(static_cast<int>(x_seed & 0x7fffffff));
-    ctx_->commandArgs(argc, argv);
-    const std::string plus = ctx_->commandArgsPlusMatch("trace");
-    keep_trace_ = plus == "+trace";
-    const bool trace = keep_trace_ || env_u64("RPU_TRACE", 0) != 0;
-    if (trace) ctx_->traceEverOn(true);
-    top_ = std::make_unique<Top>(ctx_.get());
-    if (trace) open_trace(argc > 0 ? argv[0] : name);
+        m_(model_options(name, argc, argv)) {
+    for (int k = 1; k < argc; ++k) args_.emplace_back(argv[k]);
+    if (trace_) open_trace(argc > 0 ? argv[0] : name);
   }
   ~Testbench() {
-    top_->final();
-    coverage_.write(*ctx_);
-#if VM_TRACE_FST
-    if (fst_) {
-      fst_->close();
-      if (!failed_ && !keep_trace_) std::filesystem::remove(trace_path_);
-    }
-#endif
+    write_vector_hash();
+    m_.finish();
+    if (!trace_path_.empty() && !failed_ && !keep_trace_) std::filesystem::remove(trace_path_);
   }
   Top& top() { return *top_; }
   long vectors(long fallback) const {  // RPU_VECTORS, else the testbench's default
@@ -299,20 +302,9 @@ class Testbench {
   void add_matched(long n) { matched_ += n; }
 
   // Inputs settled before the edge (the outputs then show this cycle's combinational values).
-  void settle() {
-    top_->clk_i = 0;
-    top_->eval();
-    settled_ = true;
-  }
+  void settle() { m_.settle(); }
   void tick() {
-    if (!settled_) settle();
-    dump();
-    ctx_->timeInc(1);
-    top_->clk_i = 1;
-    top_->eval();
-    dump();
-    ctx_->timeInc(1);
-    settled_ = false;
+    m_.tick();
     ++cycle_;
   }
   void reset(int cycles = 4) {
@@ -320,32 +312,30 @@ class Testbench {
     for (int k = 0; k < cycles; ++k) tick();
     top_->rst_ni = 1;
     was_reset_ = true;
-    coverage_.mark(*ctx_);  // the toggle base: power-up values and the first reset left out
+    m_.coverage.mark(*m_.ctx);  // the toggle base: power-up values and the first reset left out
   }
 
   // "FAILURE: ..." (the trace flushed and kept); returns 1, the exit status.
   int fail(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
     std::va_list ap;
     va_start(ap, fmt);
-    std::printf("FAILURE: ");
-    std::vprintf(fmt, ap);
-    std::printf("\n");
+    const std::string what = vformat(fmt, ap);
     va_end(ap);
+    std::printf("FAILURE: %s\n", what.c_str());
     return failed();
   }
   // "<name>: matched N items in C cycles (details)"; returns 0.
   int pass(const char* fmt = nullptr, ...) __attribute__((format(printf, 2, 3))) {
     std::printf("%s: matched %ld items in %ld cycles", name_, matched_, cycle_);
     if (max_latency_ > 0) std::printf(", latency %ld", max_latency_);
+    std::string details;
     if (fmt) {
       std::va_list ap;
       va_start(ap, fmt);
-      std::printf(" (");
-      std::vprintf(fmt, ap);
-      std::printf(")");
+      details = " (" + vformat(fmt, ap) + ")";
       va_end(ap);
     }
-    std::printf("\n");
+    std::printf("%s\n", details.c_str());
     return 0;
   }
   // A coverage verdict (Tally::too_weak): true, after its FAILURE line, where it names a gap.
@@ -441,6 +431,7 @@ class Testbench {
           r.max_latency = std::max(r.max_latency, lat);
           max_latency_ = std::max(max_latency_, lat);
           if (!o.ok()) return mismatch(r, s, items, p.index, o);
+          if (hash_path_) hash_item(s, items[p.index], o);
           pending.pop_front();
           ++matched;
           ++matched_;
@@ -480,43 +471,75 @@ class Testbench {
   }
 
  private:
-  void open_trace(const char* argv0) {
-#if VM_TRACE_FST
-    const char* dir = std::getenv("RPU_TRACE_DIR");
-    trace_path_ = std::string(dir ? dir : ".") + "/" +
-                  std::filesystem::path(argv0).filename().string() + ".fst";
-    fst_ = std::make_unique<VerilatedFstC>();
-    top_->trace(fst_.get(), 99);
-    fst_->open(trace_path_.c_str());
-    std::printf("%s: FST trace %s\n", name_, trace_path_.c_str());
-#else
-    (void)argv0;
-    std::printf("%s: this build has no trace support (configure with -DRPU_SIM_TRACE=ON)\n", name_);
-#endif
+  // RPU_VECTOR_HASH=file: every matched item's source, inputs and expected outputs folded into
+  // one FNV-1a hash per program and arguments, appended to the file at exit ("<program args>:
+  // items N hash H latency L"). Two runs with the same lines played the same vectors.
+  template <class Item>
+  void hash_item(const Stream<Top, Item>& s, const Item& it, const Outputs& o) {
+    Inputs list(Inputs::kList, drive_rng_);
+    s.inputs(list, *top_, it);
+    const std::string rec = (s.what ? s.what(it) : std::string()) + "|" + list.text() + "|" +
+                            o.expected() + "\n";
+    for (const unsigned char ch : rec) vector_hash_ = (vector_hash_ ^ ch) * 0x100000001B3ull;
+    ++hashed_;
   }
-  void dump() {
-#if VM_TRACE_FST
-    if (fst_) fst_->dump(ctx_->time());
-#endif
+  void write_vector_hash() const {
+    if (!hash_path_) return;
+    std::string line = program_invocation_short_name;
+    for (const std::string& a : args_) line += " " + a;
+    char tail[128];
+    std::snprintf(tail, sizeof tail, ": items %ld hash %016llx latency %ld\n", hashed_,
+                  static_cast<unsigned long long>(vector_hash_), max_latency_);
+    line += tail;
+    if (std::FILE* f = std::fopen(hash_path_, "a")) {
+      std::fputs(line.c_str(), f);
+      std::fclose(f);
+    }
+  }
+  // The model's options: random power-up values from RPU_X_SEED (printed), and a trace on
+  // request (+trace keeps it; RPU_TRACE=1 keeps it only for a failing run).
+  typename VerilatedModel<Top>::Options model_options(const char* name, int argc, char** argv) {
+    const std::uint64_t x_seed = env_u64("RPU_X_SEED", 20261122);
+    std::printf("%s: initial register values from x-seed %llu (set RPU_X_SEED for others)\n",
+                name, static_cast<unsigned long long>(x_seed));
+    for (int k = 1; k < argc; ++k) keep_trace_ = keep_trace_ || std::string(argv[k]) == "+trace";
+    trace_ = keep_trace_ || env_u64("RPU_TRACE", 0) != 0;
+    typename VerilatedModel<Top>::Options o;
+    o.random_init = true;  // every register random at power-up (the model is --x-initial unique)
+    o.x_seed = x_seed & 0x7fffffff;
+    o.trace = trace_;
+    o.argc = argc;
+    o.argv = argv;
+    o.coverage_name = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : name;
+    return o;
+  }
+  void open_trace(const char* argv0) {
+    const char* dir = std::getenv("RPU_TRACE_DIR");
+    const std::string path = std::string(dir ? dir : ".") + "/" +
+                             std::filesystem::path(argv0).filename().string() + ".fst";
+    if (!m_.open_trace(path)) {
+      std::printf("%s: this build has no trace support (configure with -DRPU_SIM_TRACE=ON)\n",
+                  name_);
+      return;
+    }
+    trace_path_ = path;
+    std::printf("%s: FST trace %s\n", name_, trace_path_.c_str());
   }
   int failed() {
     failed_ = true;
-#if VM_TRACE_FST
-    if (fst_) {
-      fst_->flush();
+    if (!trace_path_.empty()) {
+      m_.flush_trace();
       std::printf("  trace: %s\n", trace_path_.c_str());
     }
-#endif
     std::fflush(stdout);
     return 1;
   }
   RunResult failed(RunResult& r, const char* fmt, ...) __attribute__((format(printf, 3, 4))) {
     std::va_list ap;
     va_start(ap, fmt);
-    std::printf("FAILURE ");
-    std::vprintf(fmt, ap);
-    std::printf("\n");
+    const std::string what = vformat(fmt, ap);
     va_end(ap);
+    std::printf("FAILURE %s\n", what.c_str());
     failed();
     return r;
   }
@@ -543,15 +566,16 @@ class Testbench {
 
  private:
   std::mt19937_64 drive_rng_;  // valid gaps, backpressure, junk and tags
-  CoverageFile coverage_;       // RPU_COVERAGE_DIR, in a coverage build
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Top> top_;
-#if VM_TRACE_FST
-  std::unique_ptr<VerilatedFstC> fst_;
-#endif
-  std::string trace_path_;
-  bool keep_trace_ = false, failed_ = false, settled_ = false, was_reset_ = false;
+  bool keep_trace_ = false, trace_ = false;  // set by model_options(), before the model
+  VerilatedModel<Top> m_;       // the context, the model, its trace and coverage
+  Top* const top_ = m_.top.get();
+  std::string trace_path_;      // the open trace's file ("" without one)
+  bool failed_ = false, was_reset_ = false;
   long cycle_ = 0, matched_ = 0, max_latency_ = 0;
+  const char* hash_path_ = std::getenv("RPU_VECTOR_HASH");
+  std::vector<std::string> args_;
+  std::uint64_t vector_hash_ = 0xCBF29CE484222325ull;
+  long hashed_ = 0;
 };
 
 }  // namespace rpu::sim

@@ -22,9 +22,7 @@ struct Item {
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_capture> tb("tb_rpu_capture", argc, argv);
   auto& rng = tb.rng;
-  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
-  const ref::HwParams p = sim::tb_params();
-  const ref::ModelScene m = ref::quantize_scene(sc, p);
+  const auto [sc, p, m] = sim::quantized_demo_scene("curve12");
   const int CW = p.coord_w, XW = CW + 3, EW = p.edge_w(), TW = p.t_w();
   const long count = tb.vectors(100000);
 

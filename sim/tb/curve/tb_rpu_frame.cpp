@@ -27,9 +27,7 @@ constexpr int kEW = H::kFrameMant + 2, kCW2 = H::kFrameCosFrac + 2,
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_frame> tb("tb_rpu_frame", argc, argv);
   auto& rng = tb.rng;
-  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
-  const ref::HwParams p = sim::tb_params();
-  const ref::ModelScene m = ref::quantize_scene(sc, p);
+  const auto [sc, p, m] = sim::quantized_demo_scene("curve12");
   const int CW = p.coord_w, DW = p.diff_w(), TW = p.t_w(), n = p.n;
   const int XW = H::kCandXW, CaW = kCW2 + p.t_frac + 3;
   const int FS = H::kFrameWFrac - H::kFrameGuideFrac;

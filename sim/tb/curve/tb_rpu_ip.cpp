@@ -81,9 +81,7 @@ int edit_pair(const ref::HwParams& p, std::mt19937_64& rng, ref::SegmentDesc& s,
 int main(int argc, char** argv) {
   sim::Testbench<Dut> tb(kName, argc, argv);
   auto& rng = tb.rng;
-  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
-  const ref::HwParams p = sim::tb_params();
-  const ref::ModelScene m = ref::quantize_scene(sc, p);
+  const auto [sc, p, m] = sim::quantized_demo_scene("curve12");
   const long count = tb.vectors(UNROLLED ? 20000 : 4000);
 
   std::vector<Item> items;

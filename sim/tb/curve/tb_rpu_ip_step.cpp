@@ -116,9 +116,7 @@ struct Item {
 int main(int argc, char** argv) {
   sim::Testbench<Vrpu_ip_step> tb("tb_rpu_ip_step", argc, argv);
   auto& rng = tb.rng;
-  const scene::CompiledScene sc = sim::compiled_demo_scene("curve12");
-  const ref::HwParams p = sim::tb_params();
-  const ref::ModelScene m = ref::quantize_scene(sc, p);
+  const auto [sc, p, m] = sim::quantized_demo_scene("curve12");
   const Widths w(p);
   const int MdW = sim::md_width(p);
   const long count = tb.vectors(20000);
