@@ -232,6 +232,26 @@ class Outputs {
   bool modulo_ = false;
 };
 
+// A packed output port read field by field from its top bits down, the order of the RTL's
+// concatenation {a, b, c}:
+//   Unpack f(get_bits(t.state_o, n + 2 * MdW));  o.value("tau", want, f.u(n));
+class Unpack {
+ public:
+  explicit Unpack(Bits b) : b_(std::move(b)), at_(b_.width()) {}
+  i128 u(int w) {  // the next field, unsigned
+    at_ -= w;
+    return static_cast<i128>(b_.field(at_, w));
+  }
+  i128 s(int w) {  // the next field, signed
+    at_ -= w;
+    return b_.field_signed(at_, w);
+  }
+
+ private:
+  Bits b_;
+  int at_;
+};
+
 // The valid and ready patterns of a run (verilog-axis's idle and backpressure generators).
 struct Traffic {
   int valid_pct = 85;  // chance that the source offers the next item in a cycle

@@ -111,12 +111,10 @@ inline Bits pack_state(const ref::HwParams& p, const ref::IpState& st) {
 template <class P>
 void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w) {
   const int MdW = md_width(p);
-  const Bits b = get_bits(port, p.n + 2 * MdW);
-  int at = b.width();
-  const auto next = [&](int w) { return at -= w; };
-  o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
-  o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
-  o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
+  Unpack f(get_bits(port, p.n + 2 * MdW));
+  o.value("tau", static_cast<i128>(w.tau), f.u(p.n));
+  o.value("lo.md", w.lo.md, f.u(MdW));
+  o.value("hi.md", w.hi.md, f.u(MdW));
 }
 
 
@@ -124,17 +122,14 @@ void state_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref:
 template <class P>
 void ip_outputs(Outputs& o, const P& port, const ref::HwParams& p, const ref::IpState& w,
                 const ref::TestPoint& tp) {
-  const int TW = p.t_w(), XW = p.coord_w + 3, MdW = md_width(p);
-  const Bits b = get_bits(port, p.n + TW + 3 * XW + 2 * MdW);
-  int at = b.width();
-  const auto next = [&](int w) { return at -= w; };
-  o.value("tau", static_cast<i128>(w.tau), static_cast<i128>(b.field(next(p.n), p.n)));
-  o.value("t", tp.t, b.field_signed(next(TW), TW));
-  const i128 z = b.field_signed(next(XW), XW), y = b.field_signed(next(XW), XW);
-  const i128 x = b.field_signed(next(XW), XW);
+  const int TW = p.t_w(), XW = p.point_w(), MdW = md_width(p);
+  Unpack f(get_bits(port, p.n + TW + 3 * XW + 2 * MdW));
+  o.value("tau", static_cast<i128>(w.tau), f.u(p.n));
+  o.value("t", tp.t, f.s(TW));
+  const i128 z = f.s(XW), y = f.s(XW), x = f.s(XW);
   o.value("X.x", tp.X.x, x).value("X.y", tp.X.y, y).value("X.z", tp.X.z, z);
-  o.value("lo.md", w.lo.md, static_cast<i128>(b.field(next(MdW), MdW)));
-  o.value("hi.md", w.hi.md, static_cast<i128>(b.field(next(MdW), MdW)));
+  o.value("lo.md", w.lo.md, f.u(MdW));
+  o.value("hi.md", w.hi.md, f.u(MdW));
 }
 
 }  // namespace rpu::sim

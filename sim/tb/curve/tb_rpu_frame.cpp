@@ -85,12 +85,9 @@ int main(int argc, char** argv) {
     const ref::PairFrame& w = it.want;
     const auto fields = [&](const auto& port, int total, std::vector<std::pair<const char*, i128>> want,
                             std::vector<int> widths) {
-      const sim::Bits b = sim::get_bits(port, total);
-      int at = total;
-      for (size_t k = 0; k < want.size(); ++k) {
-        at -= widths[k];
-        o.value(want[k].first, want[k].second, b.field_signed(at, widths[k]));
-      }
+      sim::Unpack u(sim::get_bits(port, total));
+      for (size_t k = 0; k < want.size(); ++k)
+        o.value(want[k].first, want[k].second, u.s(widths[k]));
     };
     fields(t.xy_o, 4 * XW, {{"x0", w.x0}, {"x1", w.x1}, {"y0", w.y0}, {"y1", w.y1}},
            {XW, XW, XW, XW});

@@ -54,12 +54,8 @@ template <class P>
 void compare(sim::Outputs& o, const P& port, const Fields& fs) {
   int total = 0;
   for (const Field& f : fs) total += f.width;
-  const sim::Bits b = sim::get_bits(port, total);
-  int at = total;
-  for (const Field& f : fs) {
-    at -= f.width;
-    o.value(f.name, f.value, b.field_signed(at, f.width));
-  }
+  sim::Unpack u(sim::get_bits(port, total));
+  for (const Field& f : fs) o.value(f.name, f.value, u.s(f.width));
 }
 Fields fs_fields(const Widths& w, const ref::FrameState& s) {
   return {{"X", s.X, w.XSW},        {"Y", s.Y, w.XSW},         {"T", s.T, w.TSW},
