@@ -3,7 +3,7 @@
 // come from flip-flops and no combinational path runs from ready_i to ready_o. Throughput one
 // word per cycle while the consumer keeps up; ready_o is low only while the spill slot is full.
 // Words leave in arrival order, each exactly once. A shared block, verified through the units
-// that use it (rpu_top's work-item input, rpu_resolve's output, and their formal properties).
+// that use it (rpu_top's work-item input and its formal properties).
 `default_nettype none
 
 module rpu_skid #(

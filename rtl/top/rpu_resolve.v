@@ -7,7 +7,8 @@
 // Items that do not hit are ignored (their depth and primitive are don't-care).
 //
 // Unlike the fixed-latency arithmetic units this is a valid/ready stream with real
-// backpressure (`valid_i/ready_o` in, `valid_o/ready_i` out). The output is rpu_skid: an output
+// backpressure (`valid_i/ready_o` in, `valid_o/ready_i` out). The output is a skid register in
+// the style of Forencich's verilog-axis axis_register (SKID) / PULP's spill_register: an output
 // register plus one spill slot, so `valid_o`, the result fields and `ready_o` all come straight
 // from flip-flops and no combinational path runs from `ready_i` to `ready_o`. Throughput is one
 // work item per cycle while the consumer keeps up. `ready_o` is low only while the spill slot is
@@ -75,36 +76,49 @@ module rpu_resolve #(
     end
   end
 
-  // ---- output: rpu_skid (an output register and one spill slot) ----
-  wire            push   = accept && last_i;     // a pixel's result is ready
+  // ---- output skid register: out (visible) and spill (the one extra result) ----
+  wire           push   = accept && last_i;     // a pixel's result is ready
   wire [ResW-1:0] result = {pixel_i, best_any, best_depth, best_prim};
-  wire [ResW-1:0] out_w;
-`ifdef FORMAL
-  wire [1:0]        f_held;     // results in the skid register
-  wire [2*ResW-1:0] f_entries;  // {spill, output}
-`endif
+
+  reg             out_valid_q, spill_valid_q;
+  reg [ResW-1:0]  out_q, spill_q;
 
   // The spill slot is empty exactly when the unit can take an item (so ready_o is a register).
-  rpu_skid #(.W(ResW)) u_out (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (push),
-    .ready_o (ready_o),
-    .data_i  (result),
-    .valid_o (valid_o),
-    .ready_i (ready_i),
-    .data_o  (out_w)
-`ifdef FORMAL
-    ,
-    .f_count_o   (f_held),
-    .f_entries_o (f_entries)
-`endif
-  );
+  assign ready_o = !spill_valid_q;
 
-  assign pixel_o     = out_w[ResW-1 -: PixW];
-  assign any_hit_o   = out_w[DepthW + PrimW];
-  assign depth_o     = out_w[PrimW +: DepthW];
-  assign primitive_o = out_w[0 +: PrimW];
+  wire out_free = ready_i || !out_valid_q;  // the output register can load this cycle
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      out_valid_q   <= 1'b0;
+      spill_valid_q <= 1'b0;
+    end else if (spill_valid_q) begin
+      // Stalled (nothing accepted): drain the spill slot into the output register.
+      if (ready_i) begin
+        out_valid_q   <= 1'b1;
+        spill_valid_q <= 1'b0;
+      end
+    end else if (out_free) begin
+      out_valid_q <= push;
+    end else if (push) begin
+      spill_valid_q <= 1'b1;  // output held: park the new result
+    end
+  end
+  always @(posedge clk_i) begin
+    if (spill_valid_q) begin
+      if (ready_i) out_q <= spill_q;
+    end else if (out_free) begin
+      if (push) out_q <= result;
+    end else if (push) begin
+      spill_q <= result;
+    end
+  end
+
+  assign valid_o     = out_valid_q;
+  assign pixel_o     = out_q[ResW-1 -: PixW];
+  assign any_hit_o   = out_q[DepthW + PrimW];
+  assign depth_o     = out_q[PrimW +: DepthW];
+  assign primitive_o = out_q[0 +: PrimW];
 
 `ifdef FORMAL
   // ---- formal properties (scripts/formal.sh, docs/verification.md) ----
@@ -128,9 +142,10 @@ module rpu_resolve #(
     if (!rst_ni) assert(!valid_o);
     if (rst_ni) begin
       // One pixel out per last item in: the results owed are exactly those held.
-      assert(f_owed == f_held);
+      assert(f_owed == {1'b0, out_valid_q} + {1'b0, spill_valid_q});
       assert(f_owed <= 2'd2);
-      assert(valid_o == (f_held != 2'd0));
+      // The spill slot only holds a result behind the output register's.
+      assert(!spill_valid_q || out_valid_q);
     end
   end
   always @(posedge clk_i) begin
@@ -149,8 +164,6 @@ module rpu_resolve #(
   // Tracked result: f_pick (free) chooses one pushed result; f_ahead counts the results in front
   // of it (0 or 1). It must reach the output unchanged, in order, and leave exactly once.
   (* anyseq *) wire f_pick;
-  wire            f_spill  = f_held == 2'd2;          // the spill slot holds a result
-  wire [ResW-1:0] f_spill_q = f_entries[ResW +: ResW];
   reg            f_track, f_done, f_ahead;
   reg [ResW-1:0] f_res;
   wire [ResW-1:0] f_out = {pixel_o, any_hit_o, depth_o, primitive_o};
@@ -162,7 +175,7 @@ module rpu_resolve #(
       f_track <= 1'b1;
       f_res   <= result;
       // In front: the results held, less the one taken this cycle.
-      f_ahead <= (valid_o && !f_out_take) || f_spill;
+      f_ahead <= (out_valid_q && !f_out_take) || spill_valid_q;
     end else if (f_track && f_out_take) begin
       if (!f_ahead) begin
         f_track <= 1'b0;
@@ -174,21 +187,21 @@ module rpu_resolve #(
   always @(*) if (rst_ni) begin
     if (f_track) begin
       assert({1'b0, f_ahead} < f_owed);
-      if (!f_ahead) assert(valid_o && f_out == f_res);
-      else          assert(f_spill && f_spill_q == f_res);
+      if (!f_ahead) assert(out_valid_q && f_out == f_res);
+      else          assert(spill_valid_q && spill_q == f_res);
     end
     assert(!(f_track && f_done));
     // A pixel with no hit leaves all zero (the spill slot's condition is its invariant).
     if (valid_o && !any_hit_o) assert(depth_o == {DepthW{1'b0}} && primitive_o == {PrimW{1'b0}});
-    if (f_spill && !f_spill_q[DepthW + PrimW])
-      assert(f_spill_q[DepthW + PrimW - 1:0] == {(DepthW + PrimW){1'b0}});
+    if (spill_valid_q && !spill_q[DepthW + PrimW])
+      assert(spill_q[DepthW + PrimW - 1:0] == {(DepthW + PrimW){1'b0}});
   end
   // Reachability: the spill slot in use (ready_o low), the tracked result out from the spill
   // slot, a pixel with a hit out.
   always @(*) if (rst_ni) begin
-    cover(f_spill && !ready_i);
+    cover(spill_valid_q && !ready_i);
     cover(f_done && !f_track && f_owed == 2'd0);
-    cover(f_track && f_ahead && f_spill);
+    cover(f_track && f_ahead && spill_valid_q);
     cover(valid_o && any_hit_o);
   end
 `endif
