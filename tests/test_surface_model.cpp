@@ -306,8 +306,11 @@ TEST(Indicator, AgreesWithTheFloatIndicatorAwayFromTheSurface) {
                              : g.has_azimuth_range()        ? u01(rng) * kTwoPi
                                                             : s.p.y_min + u01(rng) * (s.p.y_max - s.p.y_min);
             // Noise from 3 % of the radius down to 2^-10 of that: many points just beyond δ.
-            q = g.point(phi, v) + Vec3{u(rng), u(rng), u(rng)} *
-                                      (0.03 * cs.local_radius * std::exp2(-10.0 * u01(rng)));
+            // (Drawn one statement each: the order of two draws in one expression is unspecified;
+            // a braced list's are left to right.)
+            const double size = 0.03 * cs.local_radius * std::exp2(-10.0 * u01(rng));
+            const Vec3 noise{u(rng), u(rng), u(rng)};
+            q = g.point(phi, v) + noise * size;
           } else {
             q = cs.local_centre + Vec3{u(rng), u(rng), u(rng)} * cs.local_radius;
           }
