@@ -2,19 +2,10 @@
 // surfaces. Twins, per work item: rpu::ref::process_curve_pair (curve segment), ray_plane_unit +
 // texture_unit (texture segment) or process_surface_piece (surface piece); per pixel:
 // rpu::ref::Resolve.
-//   descriptors: the camera (cam_we_i), up to 2^SegAddrW segment descriptors (seg_we_i) and up
-//     to 2^SurfAddrW surface descriptors (surf_we_i) are written before a frame (formats:
-//     docs/fixed-point.md, packing: docs/rtl.md); a segment descriptor's top bit says texture
-//     (1) or curve (0);
-//   work items: (id, pixel i, j, segment, last, surface, piece) on a valid/ready stream, one per
-//     cycle; `last` marks a pixel's last work item (items of one pixel are consecutive); with
-//     `surface` set the item is piece `piece` of the surface at address `segment` of the
-//     surface RAM (the host issues every piece of each (pixel, surface) pair);
-//   results: (id, i, j, segment, last, surface, piece, texture, pieces, primitive, pred_1, hit,
-//     depth, τ_K, t, X, overflow) on a valid/ready stream, in input order (a surface piece:
-//     pred_1 is the piece's valid bit, t is 0, X the hit point);
-//   pixels: (i, j, hit, depth, primitive) on a valid/ready stream, one per pixel, from
-//     rpu_resolve fed by the result stream (a result is handed over only when both take it).
+// Ports (docs/rtl.md, "rpu_top"): the descriptor RAMs, written before a frame; work items on a
+// valid/ready stream, one per cycle, a pixel's items consecutive, `last` on its last one, a
+// surface item naming one piece of a surface; the results of the items in input order; one
+// pixel per pixel from rpu_resolve, fed by the result stream (a result leaves when both take it).
 // Inside: input skid register → segment RAM read → rpu_ray_gen → curve: rpu_sphere → rpu_ip →
 // rpu_capture → curve FIFO; texture: rpu_ray_plane → rpu_texture → texture FIFO; surface: the
 // same rpu_sphere on the bounding sphere → surface RAM read → rpu_surface_top (Sphere = 0, its
@@ -271,12 +262,12 @@ module rpu_top #(
   wire           sp_is_sf  = sp_it[ItSurfO];
 
   // ---- the K-step process ----
-  wire             ip_ready_unused, ip_valid, ip_ovf;
+  wire             ip_ready, ip_valid, ip_ovf;
   wire [StW-1:0]   ip_state;
   wire [IpCtxW-1:0] ip_ctx;
   rpu_ip #(.CoordW(CoordW), .TFrac(TFrac), .UnitFrac(UnitFrac), .SqrtW(SqrtW), .N(N), .N1(N1),
            .Metric(Metric), .Unrolled(Unrolled), .FifoLog2(FifoLog2), .CtxW(IpCtxW)) u_ip (
-    .clk_i, .rst_ni, .valid_i(sp_valid && !sp_is_sf), .ready_o(ip_ready_unused), .a_i(sp_a),
+    .clk_i, .rst_ni, .valid_i(sp_valid && !sp_is_sf), .ready_o(ip_ready), .a_i(sp_a),
     .ab_i(sp_ab),
     .alpha_i(sp_alpha), .beta_i(sp_beta), .p1_i(sp_tag[SpP1O +: SegP1W]),
     .d_i(sp_tag[SpDO +: SegDW]), .l2_i(sp_tag[SpL2O +: SegL2W]),
@@ -285,9 +276,15 @@ module rpu_top #(
     .ctx_i({sp_tag[SpItO +: ItBW], sp_tag[SpPrimO +: PrimW], sp_pred1, sp_ovf,
             sp_tag[SpEdgesO +: EdgW]}),
     .valid_o(ip_valid), .state_o(ip_state), .ovf_o(ip_ovf), .ctx_o(ip_ctx));
-  // The credit count keeps rpu_ip's own start FIFO (same depth) from ever filling: ready is 1.
+  // The credit count keeps rpu_ip's start FIFO (same depth) from filling: ready_o is high when an
+  // item comes (the iterative rpu_ip drops one offered while it is low), checked in simulation.
+`ifndef SYNTHESIS
+  always @(posedge clk_i or negedge rst_ni)
+    if (rst_ni && sp_valid && !sp_is_sf && !ip_ready)
+      $fatal(1, "rpu_top: a curve item offered to rpu_ip while its ready_o is low");
+`endif
   wire unused_md = ^ip_state[IsMdO +: 2 * MdW];
-  wire unused_ip = ^{ip_ready_unused, sp_tc_unused, sp_hc_unused, rg_v_unused};
+  wire unused_ip = ^{ip_ready, sp_tc_unused, sp_hc_unused, rg_v_unused};
 
   wire [ItBW-1:0]  i_it    = ip_ctx[IcItO +: ItBW];
   wire [PrimW-1:0] i_prim  = ip_ctx[IcPrimO +: PrimW];
