@@ -7,7 +7,7 @@
 # A failing property makes the script exit 1 and print the trace (VCD) file.
 #
 # Usage: scripts/formal.sh [--smoke] [--out DIR] [--solver S] [target ...]
-#   targets: fifo resolve admit top axi fifo_bug_full fifo_bug_stale top_bug_lost
+#   targets: fifo resolve admit admit_p5 admit_p7 top axi fifo_bug_full fifo_bug_stale top_bug_lost
 #            axi_bug_payload axi_bug_early_b (default: all)
 #   --smoke  the default-CI subset: rpu_top only to a short BMC depth (the full depth covers
 #            the reduced pipeline's latency and takes several minutes)
@@ -41,7 +41,7 @@ while (($#)); do
   esac
   shift
 done
-((${#targets[@]})) || targets=(fifo resolve admit top axi fifo_bug_full fifo_bug_stale top_bug_lost
+((${#targets[@]})) || targets=(fifo resolve admit admit_p5 admit_p7 top axi fifo_bug_full fifo_bug_stale top_bug_lost
                               axi_bug_payload axi_bug_early_b)
 for t in yosys yosys-smtbmc ${solver:-z3 cvc5}; do
   command -v "$t" >/dev/null || { echo "formal.sh: $t: not found (scripts/setup.sh)" >&2; exit 2; }
@@ -75,6 +75,8 @@ declare -A spec=(
   [fifo]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|8|12|pass"
   [resolve]="rpu_resolve|RPU_FORMAL_RESOLVE|PixW=2 DepthW=3 PrimW=2|24|8|12|pass"
   [admit]="rpu_surface_admit|RPU_FORMAL_ADMIT|Period=3 Returns=2|24|8|16|pass"
+  [admit_p5]="rpu_surface_admit|RPU_FORMAL_ADMIT|Period=5 Returns=6|24|8|40|pass"
+  [admit_p7]="rpu_surface_admit|RPU_FORMAL_ADMIT|Period=7 Returns=4|24|8|40|pass"
   [top]="rpu_top|RPU_FORMAL_TOP|$(echo $top_params)|$top_bmc|$top_ind|$top_cover|pass"
   [fifo_bug_full]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"
   [fifo_bug_stale]="rpu_fifo|RPU_FORMAL_FIFO|Width=2 Log2Depth=2|24|0|0|fail"

@@ -1,5 +1,6 @@
 # Formal checks (scripts/formal.sh, docs/verification.md), label `formal`:
-#   formal_smoke  BMC + k-induction + covers of rpu_fifo, rpu_resolve, rpu_surface_admit, rpu_axi
+#   formal_smoke  BMC + k-induction + covers of rpu_fifo, rpu_resolve, rpu_surface_admit (at
+#                 periods 3, 5 and 7), rpu_axi
 #                 (the AXI4-Lite and AXI4-Stream handshake rules, rpu_top abstracted), and
 #                 rpu_top at the reduced parameter set: its BMC to a short depth, its stream
 #                 properties proved by k-induction (the deeper BMC and the covers:
@@ -15,7 +16,8 @@ find_program(RPU_CVC5 cvc5)
 if(RPU_SMTBMC AND RPU_Z3 AND RPU_CVC5)
   add_test(NAME formal_smoke
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/formal.sh --smoke
-                   --out ${CMAKE_BINARY_DIR}/formal-smoke fifo resolve admit top axi)
+                   --out ${CMAKE_BINARY_DIR}/formal-smoke fifo resolve admit admit_p5 admit_p7
+                   top axi)
   add_test(NAME formal_faults
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/formal.sh
                    --out ${CMAKE_BINARY_DIR}/formal-faults fifo_bug_full fifo_bug_stale top_bug_lost
