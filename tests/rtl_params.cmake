@@ -37,24 +37,29 @@ function(edit file from to)
   file(WRITE ${WORK}/${file} "${changed}")
 endfunction()
 
+# One fixture: a fresh copy with one edit must fail, saying `want`.
+function(must_fail what file from to want)
+  fresh_copy()
+  edit(${file} "${from}" "${to}")
+  check(1 "${want}" "${what}")
+endfunction()
+
 fresh_copy()
 check(0 "agree with the table" "the committed RTL")
-edit(rtl/curve/rpu_chord.v "parameter integer TFrac = 24" "parameter integer TFrac = 20")
-check(1 "rtl/curve/rpu_chord.v:" "a wrong default of a table parameter")
-fresh_copy()
-edit(rtl/top/rpu_top_params.vh "parameter integer TFrac    = 24" "parameter integer TFrac    = 22")
-check(1 "rtl/top/rpu_top_params.vh:" "a wrong default in rpu_top's parameter list")
-fresh_copy()
-edit(rtl/top/rpu_resolve.v "parameter integer PrimW  = 16" "parameter integer PrimW  = 12")
-check(1 "PrimW = 12, rpu_top_params.vh declares 16" "a wrong default of one of rpu_top's parameters")
-fresh_copy()
-edit(rtl/axi/rpu_axi.v "`include \"rpu_top_params.vh\"" "parameter integer IdxW = 14")
-check(1 "does not include rpu_top_params.vh" "an AXI shell with a parameter list of its own")
-fresh_copy()
-edit(rtl/curve/rpu_capture.v "DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)" "DepthW = CoordW + 4 + EdgeW + 2")
-check(1 "rpu_capture.v:26: DepthW = CoordW + 4 + EdgeW + 2 repeats `RPU_DEPTHW(CoordW, EdgeFrac)"
-      "a width formula written out by hand")
-fresh_copy()
-edit(sim/tb/tb_common.h "#define COORD_W 24" "#define COORD_W 20")
-check(1 "COORD_W = 20, the table (ref/model/hw_params.def) says 24" "a testbench default")
+must_fail("a wrong default of a table parameter" rtl/curve/rpu_chord.v
+          "parameter integer TFrac = 24" "parameter integer TFrac = 20" "rtl/curve/rpu_chord.v:")
+must_fail("a wrong default in rpu_top's parameter list" rtl/top/rpu_top_params.vh
+          "parameter integer TFrac    = 24" "parameter integer TFrac    = 22"
+          "rtl/top/rpu_top_params.vh:")
+must_fail("a wrong default of one of rpu_top's parameters" rtl/top/rpu_resolve.v
+          "parameter integer PrimW  = 16" "parameter integer PrimW  = 12"
+          "PrimW = 12, rpu_top_params.vh declares 16")
+must_fail("an AXI shell with a parameter list of its own" rtl/axi/rpu_axi.v
+          "`include \"rpu_top_params.vh\"" "parameter integer IdxW = 14"
+          "does not include rpu_top_params.vh")
+must_fail("a width formula written out by hand" rtl/curve/rpu_capture.v
+          "DepthW = `RPU_DEPTHW(CoordW, EdgeFrac)" "DepthW = CoordW + 4 + EdgeW + 2"
+          "rpu_capture.v:26: DepthW = CoordW + 4 + EdgeW + 2 repeats `RPU_DEPTHW(CoordW, EdgeFrac)")
+must_fail("a testbench default" sim/tb/tb_common.h "#define COORD_W 24" "#define COORD_W 20"
+          "COORD_W = 20, the table (ref/model/hw_params.def) says 24")
 file(REMOVE_RECURSE ${WORK})
